@@ -1,0 +1,70 @@
+#pragma once
+// Typed, validated run configuration read from the PETSc options database. Every option is
+// registered with PetscOptions* so that -help lists it with its default and unit; values are
+// checked once, here, and bad values raise vp::InputError naming the option and the valid range.
+#include "vp/core/Vec3.hpp"
+#include <array>
+#include <mpi.h>
+#include <string>
+
+namespace vp {
+
+enum class BcType { Wall, Slip, Periodic, Velocity };
+const char* bcName(BcType t);
+
+struct GridConfig {
+  std::array<int, 3> n{32, 32, 32};        // cells per axis
+  std::array<double, 3> lo{0, 0, 0};       // domain box [m]
+  std::array<double, 3> hi{1, 1, 1};
+};
+
+// Boundary condition on each of the six faces, index 2*axis + side (side 0 = low, 1 = high).
+struct BoundaryConfig {
+  std::array<BcType, 6> type{BcType::Wall, BcType::Wall, BcType::Wall,
+                             BcType::Wall, BcType::Wall, BcType::Wall};
+  std::array<Vec3, 6> velocity{};          // wall velocity (only for BcType::Velocity) [m/s]
+  bool periodic(int axis) const { return type[2 * axis] == BcType::Periodic; }
+};
+
+enum class InitFlow { Rest, TaylorGreen, Abc, Poiseuille };
+
+struct FluidConfig {
+  bool off = false;                        // -fluid_off: DEM only
+  double rho = 1.0;                        // density [kg/m^3]
+  double mu = 1e-3;                        // dynamic viscosity [Pa s]
+  Vec3 bodyForce{};                        // acceleration acting on the fluid [m/s^2]
+  InitFlow init = InitFlow::Rest;
+  double initVelocity = 1.0;               // amplitude of the analytic initial flows [m/s]
+  double nu() const { return mu / rho; }
+};
+
+struct TimeConfig {
+  double final = 1.0;                      // end time [s]
+  int maxSteps = 1000000;
+  double cfl = 0.5;
+  double dtMax = 0;                        // 0: set from the grid (min h^2 / nu)
+  double dt = 0;                           // > 0: fixed step
+};
+
+struct OutputConfig {
+  std::string dir = "output";
+  int every = 0;                           // steps between snapshots (0: none)
+  double dt = 0;                           // simulated time between snapshots (0: none)
+  int monitorEvery = 10;                   // steps between progress lines (0: none)
+};
+
+struct Config {
+  Vec3 gravity{};                          // on particles; on the fluid it is hydrostatic
+  GridConfig grid;
+  BoundaryConfig bc;
+  FluidConfig fluid;
+  TimeConfig time;
+  OutputConfig output;
+
+  // Reads and validates all options (collective; throws InputError on bad input).
+  static Config fromOptions(MPI_Comm comm);
+  // Checks the values (also used for configurations built in code, e.g. by tests).
+  void validate() const;
+};
+
+} // namespace vp

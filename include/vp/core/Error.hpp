@@ -1,0 +1,26 @@
+#pragma once
+// Errors: InputError for bad user input (options, case and restart files), reported by vpsolve as
+// one clear line and a non-zero exit; PetscFailure for an error code returned by PETSc.
+#include <petscsys.h>
+#include <stdexcept>
+#include <string>
+
+namespace vp {
+
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct PetscFailure : std::runtime_error {
+  PetscFailure(PetscErrorCode code, const char* file, int line);
+  PetscErrorCode code;
+};
+
+} // namespace vp
+
+// Call a PETSc function from C++ code that does not return PetscErrorCode: throw on failure.
+#define VP_CALL(...)                                                     \
+  do {                                                                   \
+    PetscErrorCode vp_ierr_ = (__VA_ARGS__);                             \
+    if (vp_ierr_ != 0) throw ::vp::PetscFailure(vp_ierr_, __FILE__, __LINE__); \
+  } while (0)
