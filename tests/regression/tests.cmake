@@ -1,0 +1,1 @@
+# vpsolve executable tests (bad input, short case runs); included from tests/CMakeLists.txt.
