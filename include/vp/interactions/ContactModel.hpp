@@ -1,0 +1,74 @@
+#pragma once
+// Soft-sphere contact law (PHYSICS.md 3) as pure kernels: linear spring-dashpot in the normal
+// direction, a tangential spring with history capped by Coulomb friction, for sphere-sphere and
+// sphere-wall contacts. No grid, no MPI; the caller supplies geometry and kinematics.
+#include "vp/core/Vec3.hpp"
+#include "vp/particles/ParticleConfig.hpp"
+#include <cmath>
+
+namespace vp {
+
+// Coefficients of one contact: F_n = k_n delta - g_n v_n, F_t = -k_t s - g_t v_t, |F_t| <= mu |F_n|.
+struct ContactCoefficients {
+  double kn = 0, gn = 0, kt = 0, gt = 0, mu = 0;
+};
+
+// Turns the options into per-contact coefficients for an effective mass m* (wall: m* = m_i).
+class ContactLaw {
+public:
+  ContactLaw() = default;
+  // dtFluid is only used for -contact_tc_steps.
+  ContactLaw(const ContactConfig& c, double dtFluid);
+  ContactCoefficients coefficients(double meff, bool wall) const;
+  // Contact duration of a pair of effective mass m* (exact for the linear law).
+  double contactTime(double meff, bool wall) const;
+  // Surface gap at which contact starts for radii ai, aj (aj = 0 for a wall: gap = roughness * 2 ai).
+  double roughnessGap(double ai, double aj) const { return roughness_ * (aj > 0 ? ai + aj : 2 * ai); }
+  double roughness() const { return roughness_; }
+
+private:
+  double tc_ = 0, kn_ = 0, knWall_ = 0, lnE_ = 0, mu_ = 0, ktRatio_ = 0, gtRatio_ = 0, roughness_ = 0;
+};
+
+struct ContactForce {
+  Vec3 normal;      // on the particle, along n
+  Vec3 tangential;  // on the particle, in the tangent plane
+};
+
+// One contact step. n: unit normal from the partner (or wall) to the particle; overlap: a_i + a_j +
+// roughness gap - distance (> 0 in contact); vc: velocity of the particle's contact point relative
+// to the partner's; spring: the tangential spring s (history), updated in place over dt.
+// The old spring is first rotated onto the current tangent plane (length kept), then stretched by
+// v_t dt; if the trial force exceeds mu |F_n| the force is capped and the spring reset to the
+// length that gives exactly the capped force (gross sliding).
+inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, const ContactCoefficients& c,
+                                 Vec3& spring, double dt)
+{
+  const double vn = dot(vc, n);
+  const double fnMag = c.kn * overlap - c.gn * vn;
+  const Vec3 vt = vc - vn * n;
+  const double s2 = dot(spring, spring);
+  if (s2 > 0) {
+    Vec3 p = spring - dot(spring, n) * n;
+    const double p2 = dot(p, p);
+    spring = p2 > 0 ? p * std::sqrt(s2 / p2) : Vec3{};
+  }
+  spring += dt * vt;
+  Vec3 ft = -c.kt * spring - c.gt * vt;
+  const double cap = c.mu * std::fabs(fnMag);
+  const double ft2 = dot(ft, ft);
+  if (ft2 > cap * cap) {
+    ft *= cap / std::sqrt(ft2);
+    spring = c.kt > 0 ? -(ft + c.gt * vt) / c.kt : Vec3{};
+  }
+  return {fnMag * n, ft};
+}
+
+// Velocity of sphere i's contact point relative to sphere j's, n pointing from j to i.
+inline Vec3 contactVelocity(const Vec3& vi, const Vec3& wi, double ai, const Vec3& vj, const Vec3& wj, double aj,
+                            const Vec3& n)
+{
+  return vi - vj - cross(ai * wi + aj * wj, n);
+}
+
+} // namespace vp

@@ -1,0 +1,39 @@
+#pragma once
+// Time series of tracked particles (-track_particles): particle_<id>.csv with columns
+// time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz (hydrodynamic force) followed by fcx,fcy,fcz (contact,
+// lubrication and gravity force) and tx,ty,tz (non-hydrodynamic torque). Owners send their rows to
+// rank 0, which buffers and appends them.
+#include "vp/particles/ParticleConfig.hpp"
+#include "vp/particles/ParticleStore.hpp"
+#include <map>
+#include <mpi.h>
+#include <set>
+#include <string>
+
+namespace vp {
+
+class ParticleTracker {
+public:
+  // Starts the files afresh (header only).
+  ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s);
+  ~ParticleTracker();
+  ParticleTracker(const ParticleTracker&) = delete;
+  ParticleTracker& operator=(const ParticleTracker&) = delete;
+
+  bool active() const { return all_ || !ids_.empty(); }
+  // Collective: one row per tracked particle.
+  void record(const ParticleStore& s, double time);
+  // Rank 0 appends the buffered rows.
+  void flush();
+
+private:
+  bool tracked(std::int64_t id) const { return all_ || ids_.count(id); }
+  MPI_Comm comm_;
+  std::string dir_;
+  bool all_;
+  std::set<std::int64_t> ids_;
+  std::map<std::int64_t, std::string> pending_;
+  std::size_t pendingRows_ = 0;
+};
+
+} // namespace vp

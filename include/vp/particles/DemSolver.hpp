@@ -1,0 +1,69 @@
+#pragma once
+// The particle layer: soft-sphere DEM with friction on the grid's domain decomposition.
+// Simulation calls advance(t, dt) once per fluid step (M = -dem_substeps velocity-Verlet sub-steps
+// of dt/M, with the hydrodynamic force and torque in particles().fhyd/thyd held fixed), and
+// diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step.
+#include "vp/core/Config.hpp"
+#include "vp/grid/Grid.hpp"
+#include "vp/interactions/ContactModel.hpp"
+#include "vp/particles/CellBuckets.hpp"
+#include "vp/particles/Exchange.hpp"
+#include "vp/particles/PairList.hpp"
+#include "vp/particles/ParticleConfig.hpp"
+#include "vp/particles/ParticleStore.hpp"
+#include "vp/particles/Walls.hpp"
+#include <memory>
+
+namespace vp {
+
+struct DemDiagnostics {
+  double kineticEnergy = 0;   // translational + rotational [J]
+  long particles = 0;
+  long contacts = 0;          // sphere-sphere pairs in contact
+  long wallContacts = 0;      // sphere-wall contacts
+};
+
+class DemSolver {
+public:
+  // Particles from the options (-particles_file, generators, single particle).
+  DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc);
+  // Particles given as one global list, identical on every rank (tests, restart).
+  DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all);
+
+  // One fluid step [t, t + dt]: -dem_substeps sub-steps. Collective.
+  void advance(double t, double dt);
+
+  ParticleStore& particles() { return store_; }
+  const ParticleStore& particles() const { return store_; }
+  // Collective: global sums over owned particles.
+  DemDiagnostics diagnostics() const;
+  // A stable DEM step: the shortest contact duration / 50 (collective).
+  double suggestedStep() const;
+  double halo() const { return exchange_->halo(); }
+  const ContactLaw& law() const { return law_; }
+  std::size_t migrations() const { return migrations_; }
+  std::size_t rebuilds() const { return rebuilds_; }
+
+private:
+  void setUp(const std::vector<ParticleRecord>& all);
+  void substep(double dt);
+  bool needRebuild() const;
+  void rebuild();
+  void computeForces(double dt);
+
+  const Grid& grid_;
+  ParticleConfig pc_;
+  ContactLaw law_;
+  Vec3 gravity_;
+  std::array<Wall, 6> walls_;
+  double skin_ = 0;        // neighbour-list skin [m]
+  double rmax_ = 0;
+  std::unique_ptr<ParticleExchange> exchange_;
+  ParticleStore store_;
+  CellBuckets buckets_;
+  PairList pairs_;
+  long contacts_ = 0, wallContacts_ = 0;
+  std::size_t migrations_ = 0, rebuilds_ = 0;
+};
+
+} // namespace vp

@@ -1,0 +1,73 @@
+#pragma once
+// Particle, contact and DEM options (-particles_*, -particle_*, -contact_*, -dem_*, -track_particles),
+// read from the PETSc options database and validated once; bad values raise vp::InputError naming
+// the option and the valid range.
+#include "vp/core/Vec3.hpp"
+#include <cstdint>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace vp {
+
+// -particles_lattice x0,y0,z0,x1,y1,z1,spacing,radius,jitter,seed: simple cubic lattice in a box;
+// jitter moves each centre by up to jitter * (spacing/2 - radius) per axis (never overlapping).
+struct LatticeInput {
+  bool set = false;
+  Vec3 lo, hi;
+  double spacing = 0, radius = 0, jitter = 0;
+  std::uint64_t seed = 0;
+};
+
+// -particles_random x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed: random sequential addition of
+// non-overlapping spheres (centres inside the box, spheres inside it) up to a volume fraction.
+struct RandomInput {
+  bool set = false;
+  Vec3 lo, hi;
+  double volumeFraction = 0, radius = 0;
+  std::uint64_t seed = 0;
+};
+
+// One particle from -particle_position (single-sphere cases).
+struct SingleInput {
+  bool set = false;
+  Vec3 position, velocity, angularVelocity;
+  bool fixed = false;
+};
+
+// Soft-sphere contact parameters (PHYSICS.md 3). Stiffness comes either from the contact time
+// (-contact_tc or -contact_tc_steps, stiffness per pair mass) or directly (-contact_kn,
+// -contact_kn_wall); the normal damping always gives the restitution -contact_restitution.
+struct ContactConfig {
+  double restitution = 0.9;   // normal restitution coefficient xi_n, (0, 1]
+  double friction = 0.25;     // Coulomb coefficient mu_c (sphere-sphere and sphere-wall)
+  double tc = 0;              // contact time [s] (0: not set)
+  double tcSteps = 0;         // contact time in fluid steps (0: not set)
+  double kn = 0;              // sphere-sphere normal stiffness [N/m] (0: not set)
+  double knWall = 0;          // sphere-wall normal stiffness [N/m] (0: same as kn)
+  double ktRatio = 2.0 / 7.0; // k_t / k_n
+  double gtRatio = 0.5;       // gamma_t / gamma_n
+  double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
+};
+
+struct ParticleConfig {
+  std::string file;           // -particles_file: CSV (.csv) or HDF5 table (.h5)
+  LatticeInput lattice;
+  RandomInput random;
+  SingleInput single;
+  double radius = 1e-3;       // -particle_radius [m] (single particle, lattice/random default)
+  double density = 2500;      // -particle_density [kg/m^3] (single, lattice, random)
+  double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
+  ContactConfig contact;
+  int substeps = 1;           // -dem_substeps per fluid step
+  double skin = 0.2;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
+  bool trackAll = false;      // -track_particles all
+  std::vector<std::int64_t> track; // -track_particles id,id,...
+
+  bool any() const { return !file.empty() || lattice.set || random.set || single.set; }
+
+  static ParticleConfig fromOptions(MPI_Comm comm);
+  void validate() const;
+};
+
+} // namespace vp

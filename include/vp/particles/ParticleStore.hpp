@@ -1,0 +1,58 @@
+#pragma once
+// Particle storage: struct of arrays, owned particles first ([0, nOwned)), then ghosts (copies of
+// neighbours' particles, periodic images shifted). Global ids are unique and stable.
+#include "vp/core/Vec3.hpp"
+#include "vp/interactions/ContactHistory.hpp"
+#include "vp/particles/Quaternion.hpp"
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace vp {
+
+enum ParticleFlag : std::uint8_t { kFixed = 1 };
+
+// Everything one particle carries when it changes owner (ARCHITECTURE.md 6 sync policy).
+struct ParticleRecord {
+  std::int64_t id = 0;
+  double radius = 0, density = 0;
+  std::uint8_t flags = 0;
+  Vec3 x, v, w, force, torque, fhyd, thyd;
+  Quaternion q;
+  std::array<Vec3, 6> wallSpring{};   // tangential springs against the six walls
+  ContactHistory history;             // springs against other particles
+};
+
+struct ParticleStore {
+  // Sent on ghost creation and to a new owner.
+  std::vector<std::int64_t> id;
+  std::vector<double> radius, density;
+  std::vector<std::uint8_t> flags;
+  // Derived from radius and density (inverse mass and moment of inertia; 0 when fixed).
+  std::vector<double> mass, invMass, invInertia;
+  // Sent every sub-step to ghosts.
+  std::vector<Vec3> x, v, w;
+  std::vector<Quaternion> q;
+  // Owned only (ghost entries unused): total force/torque of the last sub-step, the fixed
+  // hydrodynamic force/torque of the current fluid step, springs and position at the last rebuild.
+  std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
+  std::vector<std::array<Vec3, 6>> wallSpring;
+  std::vector<ContactHistory> history;
+
+  std::size_t nOwned = 0;
+
+  std::size_t size() const { return id.size(); }
+  std::size_t nGhost() const { return id.size() - nOwned; }
+  bool fixed(std::size_t i) const { return flags[i] & kFixed; }
+
+  // Appends a particle (at the end: call only when there are no ghosts, or for ghosts).
+  void append(const ParticleRecord& r);
+  ParticleRecord record(std::size_t i) const;
+  void resize(std::size_t n);
+  // Keeps the owned particles with keep[i] != 0 (in order); requires no ghosts.
+  void compactOwned(const std::vector<char>& keep);
+  void dropGhosts() { resize(nOwned); }
+  void clear() { resize(0); nOwned = 0; }
+};
+
+} // namespace vp

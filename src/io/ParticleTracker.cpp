@@ -1,0 +1,105 @@
+#include "vp/io/ParticleTracker.hpp"
+#include <cstdio>
+#include <vector>
+
+namespace vp {
+
+namespace {
+
+const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz\n";
+constexpr int kCols = 20;  // id + 19 values
+
+std::string fileName(const std::string& dir, std::int64_t id)
+{
+  return dir + "/particle_" + std::to_string(id) + ".csv";
+}
+
+} // namespace
+
+ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s)
+  : comm_(comm), dir_(std::move(dir)), all_(pc.trackAll), ids_(pc.track.begin(), pc.track.end())
+{
+  if (all_) {
+    // "all" means the particles present at the start: collect their ids on rank 0.
+    std::vector<std::int64_t> mine(s.id.begin(), s.id.begin() + s.nOwned);
+    int size, rank, n = static_cast<int>(mine.size());
+    MPI_Comm_size(comm_, &size);
+    MPI_Comm_rank(comm_, &rank);
+    std::vector<int> counts(size), displs(size);
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+    int total = 0;
+    for (int r = 0; r < size; ++r) {
+      displs[r] = total;
+      total += counts[r];
+    }
+    std::vector<std::int64_t> every(total);
+    MPI_Gatherv(mine.data(), n, MPI_INT64_T, every.data(), counts.data(), displs.data(), MPI_INT64_T, 0, comm_);
+    ids_.insert(every.begin(), every.end());
+  }
+  int rank;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank != 0) return;
+  for (std::int64_t id : ids_) {
+    if (FILE* f = std::fopen(fileName(dir_, id).c_str(), "w")) {
+      std::fputs(kHeader, f);
+      std::fclose(f);
+    }
+  }
+}
+
+ParticleTracker::~ParticleTracker() { flush(); }
+
+void ParticleTracker::record(const ParticleStore& s, double time)
+{
+  if (!active()) return;
+  std::vector<double> rows;
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    if (!tracked(s.id[i])) continue;
+    const Vec3 values[6] = {s.x[i], s.v[i], s.w[i], s.fhyd[i], s.force[i], s.torque[i]};
+    rows.push_back(static_cast<double>(s.id[i]));
+    rows.push_back(time);
+    for (const Vec3& v : values) {
+      rows.push_back(v.x);
+      rows.push_back(v.y);
+      rows.push_back(v.z);
+    }
+  }
+  int size, rank, n = static_cast<int>(rows.size());
+  MPI_Comm_size(comm_, &size);
+  MPI_Comm_rank(comm_, &rank);
+  std::vector<int> counts(size), displs(size);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+  int total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> all(rank == 0 ? total : 0);
+  MPI_Gatherv(rows.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm_);
+  if (rank != 0) return;
+  char line[1024];
+  for (int r = 0; r + kCols <= total; r += kCols) {
+    const double* v = &all[r];
+    int len = std::snprintf(line, sizeof line, "%.17g", v[1]);
+    for (int c = 2; c < kCols; ++c) len += std::snprintf(line + len, sizeof line - len, ",%.17g", v[c]);
+    std::snprintf(line + len, sizeof line - len, "\n");
+    pending_[static_cast<std::int64_t>(v[0])] += line;
+    ++pendingRows_;
+  }
+  if (pendingRows_ > 20000) flush();
+}
+
+void ParticleTracker::flush()
+{
+  for (auto& [id, text] : pending_) {
+    if (text.empty()) continue;
+    if (FILE* f = std::fopen(fileName(dir_, id).c_str(), "a")) {
+      std::fputs(text.c_str(), f);
+      std::fclose(f);
+    }
+    text.clear();
+  }
+  pendingRows_ = 0;
+}
+
+} // namespace vp

@@ -1,0 +1,200 @@
+#include "vp/particles/DemSolver.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/particles/Generators.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace vp {
+
+namespace {
+
+ContactLaw makeLaw(const Config& c, const ParticleConfig& pc)
+{
+  if (pc.contact.tcSteps > 0 && !(c.time.dt > 0))
+    throw InputError("option -contact_tc_steps: needs a fixed fluid step -time_dt (or use -contact_tc)");
+  return ContactLaw(pc.contact, c.time.dt);
+}
+
+} // namespace
+
+DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc)
+  : DemSolver(grid, c, pc, initialParticles(pc, c))
+{
+}
+
+DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c))
+{
+  setUp(all);
+}
+
+void DemSolver::setUp(const std::vector<ParticleRecord>& all)
+{
+  for (const ParticleRecord& r : all) rmax_ = std::max(rmax_, r.radius);
+  if (rmax_ == 0) rmax_ = pc_.radius;
+  skin_ = pc_.skin * 2 * rmax_;
+  // Halo: the farthest partner of a particle at list build (contact range + skin). The lubrication
+  // activation range adds here once lubrication is coupled.
+  const double halo = 2 * rmax_ * (1 + law_.roughness()) + skin_;
+  exchange_ = std::make_unique<ParticleExchange>(grid_, halo);
+  for (const ParticleRecord& r : all)
+    if (exchange_->owns(r.x)) store_.append(r);
+  store_.nOwned = store_.size();
+  rebuild();
+  computeForces(0);  // initial forces; zero step: springs keep their state
+}
+
+bool DemSolver::needRebuild() const
+{
+  const double limit = 0.25 * skin_ * skin_;  // (skin / 2)^2: no pair can have closed the skin
+  int local = 0;
+  for (std::size_t i = 0; i < store_.nOwned && !local; ++i) {
+    const Vec3 d = store_.x[i] - store_.xRebuild[i];
+    local = dot(d, d) > limit;
+  }
+  int global = 0;
+  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MAX, grid_.comm());
+  return global;
+}
+
+void DemSolver::rebuild()
+{
+  ParticleStore& s = store_;
+  for (std::size_t i = 0; i < s.nOwned; ++i) s.history[i].clear();
+  pairs_.exportHistory(s);
+  migrations_ += exchange_->migrate(s);
+  exchange_->createGhosts(s);
+  Vec3 lo, hi;
+  const double h = exchange_->halo();
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = exchange_->boxLo(d) - h;
+    hi[d] = exchange_->boxHi(d) + h;
+  }
+  buckets_.build(s.x, s.size(), lo, hi, h);
+  pairs_.build(s, buckets_, skin_, law_);
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    s.history[i].clear();
+    s.xRebuild[i] = s.x[i];
+  }
+  ++rebuilds_;
+}
+
+void DemSolver::computeForces(double dt)
+{
+  ParticleStore& s = store_;
+  PairList& P = pairs_;
+  const double rough = law_.roughness();
+  long contacts = 0;
+  for (std::size_t k = 0; k < P.size(); ++k) {
+    const std::uint32_t i = P.first[k], j = P.second[k];
+    const Vec3 d = s.x[i] - s.x[j];
+    const double r2 = dot(d, d);
+    const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
+    if (r2 >= reach * reach) {
+      P.spring[k] = P.force[k] = P.lever[k] = Vec3{};
+      continue;
+    }
+    const double r = std::sqrt(r2);
+    const Vec3 n = d / r;
+    const Vec3 vc = contactVelocity(s.v[i], s.w[i], s.radius[i], s.v[j], s.w[j], s.radius[j], n);
+    const ContactForce f = contactForce(n, reach - r, vc, P.coef[k], P.spring[k], dt);
+    P.force[k] = f.normal + f.tangential;
+    P.lever[k] = cross(n, f.tangential);
+    // Sphere-sphere lubrication (interactions/Lubrication) adds its force and n x F_t here, from
+    // the same pair state (n, gap = r - a_i - a_j, relative velocity), before the sums below.
+    contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
+  }
+
+  long wallContacts = 0;
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    Vec3 F, T;
+    const double a = s.radius[i];
+    for (std::uint32_t e = P.incStart[i]; e < P.incStart[i + 1]; ++e) {
+      const std::uint32_t k = P.incPair[e];
+      F += P.incSign[e] * P.force[k];
+      T -= a * P.lever[k];
+    }
+    // Walls after all particle partners, in face order (as if their ids followed every particle's).
+    for (int f = 0; f < 6; ++f) {
+      const Wall& wall = walls_[f];
+      if (!wall.active) continue;
+      const double overlap = a * (1 + 2 * rough) - wall.distance(s.x[i]);
+      Vec3& spring = s.wallSpring[i][f];
+      if (overlap <= 0 || s.fixed(i)) {
+        spring = Vec3{};
+        continue;
+      }
+      const Vec3 n = wall.normal();
+      const Vec3 vc = s.v[i] - cross(a * s.w[i], n) - wall.velocity;
+      const ContactForce c = contactForce(n, overlap, vc, law_.coefficients(s.mass[i], true), spring, dt);
+      F += c.normal + c.tangential;
+      T -= a * cross(n, c.tangential);
+      // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
+      ++wallContacts;
+    }
+    s.force[i] = F + s.mass[i] * gravity_;
+    s.torque[i] = T;
+  }
+  contacts_ = contacts;
+  wallContacts_ = wallContacts;
+}
+
+void DemSolver::substep(double dt)
+{
+  ParticleStore& s = store_;
+  const double half = 0.5 * dt;
+  // Velocity Verlet: half kick, drift, forces at the new positions, half kick.
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    if (s.fixed(i)) continue;
+    s.v[i] += (half * s.invMass[i]) * (s.force[i] + s.fhyd[i]);
+    s.w[i] += (half * s.invInertia[i]) * (s.torque[i] + s.thyd[i]);
+    s.x[i] += dt * s.v[i];
+    s.q[i] = rotated(s.q[i], s.w[i], dt);
+  }
+  if (needRebuild())
+    rebuild();
+  else
+    exchange_->updateGhosts(s);
+  computeForces(dt);
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    if (s.fixed(i)) continue;
+    s.v[i] += (half * s.invMass[i]) * (s.force[i] + s.fhyd[i]);
+    s.w[i] += (half * s.invInertia[i]) * (s.torque[i] + s.thyd[i]);
+  }
+}
+
+void DemSolver::advance(double, double dt)
+{
+  const double dtp = dt / pc_.substeps;
+  for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
+}
+
+DemDiagnostics DemSolver::diagnostics() const
+{
+  const ParticleStore& s = store_;
+  double ke = 0;
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    if (s.fixed(i)) continue;
+    ke += 0.5 * s.mass[i] * dot(s.v[i], s.v[i]) + 0.5 / s.invInertia[i] * dot(s.w[i], s.w[i]);
+  }
+  long local[3] = {static_cast<long>(s.nOwned), contacts_, wallContacts_}, global[3];
+  DemDiagnostics d;
+  MPI_Allreduce(&ke, &d.kineticEnergy, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());
+  MPI_Allreduce(local, global, 3, MPI_LONG, MPI_SUM, grid_.comm());
+  d.particles = global[0];
+  d.contacts = global[1];
+  d.wallContacts = global[2];
+  return d;
+}
+
+double DemSolver::suggestedStep() const
+{
+  double mmin = HUGE_VAL;
+  for (std::size_t i = 0; i < store_.nOwned; ++i) mmin = std::min(mmin, store_.mass[i]);
+  double g = 0;
+  MPI_Allreduce(&mmin, &g, 1, MPI_DOUBLE, MPI_MIN, grid_.comm());
+  if (!std::isfinite(g)) g = 4.0 / 3.0 * M_PI * std::pow(pc_.radius, 3) * pc_.density;
+  return std::min(law_.contactTime(0.5 * g, false), law_.contactTime(g, true)) / 50;
+}
+
+} // namespace vp

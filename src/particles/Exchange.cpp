@@ -1,0 +1,281 @@
+#include "vp/particles/Exchange.hpp"
+#include "vp/core/Error.hpp"
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace vp {
+
+namespace {
+
+// What a new ghost needs (sync policy: identity and shape once, kinematics every sub-step).
+struct GhostData {
+  std::int64_t id;
+  double radius, density;
+  Vec3 x, v, w;
+  Quaternion q;
+  std::uint8_t flags;
+};
+
+struct GhostState {
+  Vec3 x, v, w;
+  Quaternion q;
+};
+
+template <class T>
+void put(std::vector<char>& b, const T& v)
+{
+  const std::size_t n = b.size();
+  b.resize(n + sizeof(T));
+  std::memcpy(b.data() + n, &v, sizeof(T));
+}
+
+template <class T>
+T get(const char*& p)
+{
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  p += sizeof(T);
+  return v;
+}
+
+void putRecord(std::vector<char>& b, const ParticleRecord& r)
+{
+  put(b, r.id); put(b, r.radius); put(b, r.density); put(b, r.flags);
+  put(b, r.x); put(b, r.v); put(b, r.w); put(b, r.force); put(b, r.torque); put(b, r.fhyd); put(b, r.thyd);
+  put(b, r.q); put(b, r.wallSpring);
+  put(b, static_cast<std::uint32_t>(r.history.size()));
+  for (const ContactSpring& c : r.history) put(b, c);
+}
+
+ParticleRecord getRecord(const char*& p)
+{
+  ParticleRecord r;
+  r.id = get<std::int64_t>(p); r.radius = get<double>(p); r.density = get<double>(p); r.flags = get<std::uint8_t>(p);
+  r.x = get<Vec3>(p); r.v = get<Vec3>(p); r.w = get<Vec3>(p); r.force = get<Vec3>(p); r.torque = get<Vec3>(p);
+  r.fhyd = get<Vec3>(p); r.thyd = get<Vec3>(p); r.q = get<Quaternion>(p);
+  r.wallSpring = get<std::array<Vec3, 6>>(p);
+  const auto n = get<std::uint32_t>(p);
+  r.history.resize(n);
+  for (auto& c : r.history) c = get<ContactSpring>(p);
+  return r;
+}
+
+int offsetOf(int k, int d) { return (d == 0 ? k % 3 : d == 1 ? (k / 3) % 3 : k / 9) - 1; }
+
+} // namespace
+
+ParticleExchange::ParticleExchange(const Grid& grid, double halo) : grid_(grid), comm_(grid.comm()), halo_(halo)
+{
+  const PetscMPIInt* nb;
+  VP_CALL(DMDAGetNeighbors(grid.cellDM(), &nb));
+  PetscInt procs[3];
+  VP_CALL(DMDAGetInfo(grid.cellDM(), nullptr, nullptr, nullptr, nullptr, &procs[0], &procs[1], &procs[2], nullptr,
+                      nullptr, nullptr, nullptr, nullptr, nullptr));
+  for (int d = 0; d < 3; ++d) {
+    boxLo_[d] = grid.faceCoord(d, grid.start(d));
+    boxHi_[d] = grid.faceCoord(d, grid.end(d));
+    length_[d] = grid.hi(d) - grid.lo(d);
+  }
+  for (int k = 0; k < 27; ++k) {
+    neighbour_[k] = (k == 13) ? -1 : nb[k];
+    for (int d = 0; d < 3; ++d) {
+      const int o = offsetOf(k, d);
+      double s = 0;
+      if (grid.periodic(d) && o < 0 && grid.start(d) == 0) s = length_[d];
+      if (grid.periodic(d) && o > 0 && grid.end(d) == grid.n(d)) s = -length_[d];
+      shift_[k][d] = s;
+    }
+  }
+  // Ghosts reach one neighbour deep: every subdomain that has a neighbour along an axis must be at
+  // least one halo wide, and a periodic axis at least two (one image per pair).
+  double slack[3];
+  for (int d = 0; d < 3; ++d) {
+    const bool split = procs[d] > 1 || grid.periodic(d);
+    double s = split ? (boxHi_[d] - boxLo_[d]) - halo_ : 1.0;
+    if (grid.periodic(d)) s = std::min(s, length_[d] - 2 * halo_);
+    slack[d] = s;
+  }
+  double minSlack[3];
+  MPI_Allreduce(slack, minSlack, 3, MPI_DOUBLE, MPI_MIN, comm_);
+  for (int d = 0; d < 3; ++d)
+    if (minSlack[d] < 0) {
+      std::ostringstream m;
+      m << "option -grid_n: a subdomain along " << "xyz"[d] << " is thinner than the particle halo " << halo_
+        << " m (2 x largest radius + contact range + neighbour skin; periodic axes need 2 halos). "
+        << "Use fewer ranks, or a grid whose decomposition gives wider subdomains along " << "xyz"[d];
+      throw InputError(m.str());
+    }
+}
+
+int ParticleExchange::cellOf(int d, double x) const
+{
+  const int n = grid_.n(d);
+  int c = static_cast<int>(std::floor((x - grid_.lo(d)) / grid_.h(d)));
+  if (grid_.periodic(d)) c = ((c % n) + n) % n;
+  return c < 0 ? 0 : (c >= n ? n - 1 : c);
+}
+
+bool ParticleExchange::owns(const Vec3& x) const
+{
+  for (int d = 0; d < 3; ++d) {
+    const int c = cellOf(d, x[d]);
+    if (c < grid_.start(d) || c >= grid_.end(d)) return false;
+  }
+  return true;
+}
+
+Vec3 ParticleExchange::wrapped(Vec3 x) const
+{
+  for (int d = 0; d < 3; ++d) {
+    if (!grid_.periodic(d)) continue;
+    if (x[d] >= grid_.hi(d)) x[d] -= length_[d];
+    if (x[d] < grid_.lo(d)) x[d] += length_[d];
+  }
+  return x;
+}
+
+int ParticleExchange::direction(const Vec3& x, int* o) const
+{
+  int k = 0, stride = 1;
+  for (int d = 0; d < 3; ++d) {
+    // Unwrapped cell index: a particle below the low periodic face goes to the low neighbour.
+    int c = static_cast<int>(std::floor((x[d] - grid_.lo(d)) / grid_.h(d)));
+    if (!grid_.periodic(d)) c = c < 0 ? 0 : (c >= grid_.n(d) ? grid_.n(d) - 1 : c);
+    o[d] = c < grid_.start(d) ? -1 : (c >= grid_.end(d) ? 1 : 0);
+    k += (o[d] + 1) * stride;
+    stride *= 3;
+  }
+  return k;
+}
+
+void ParticleExchange::exchange(const Buffers& send, Buffers& recv, bool knownSizes)
+{
+  std::vector<MPI_Request> req;
+  req.reserve(108);
+  std::array<unsigned long, 27> sendSize{}, recvSize{};
+  if (!knownSizes) {
+    for (int k = 0; k < 27; ++k) {
+      if (neighbour_[k] < 0 || neighbour_[26 - k] < 0) continue;
+      req.emplace_back();
+      MPI_Irecv(&recvSize[k], 1, MPI_UNSIGNED_LONG, neighbour_[26 - k], k, comm_, &req.back());
+    }
+    for (int k = 0; k < 27; ++k) {
+      if (neighbour_[k] < 0) continue;
+      sendSize[k] = send[k].size();
+      req.emplace_back();
+      MPI_Isend(&sendSize[k], 1, MPI_UNSIGNED_LONG, neighbour_[k], k, comm_, &req.back());
+    }
+    MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+    req.clear();
+    for (int k = 0; k < 27; ++k) recv[k].resize(recvSize[k]);
+  }
+  for (int k = 0; k < 27; ++k) {
+    if (neighbour_[k] < 0 || neighbour_[26 - k] < 0 || recv[k].empty()) continue;
+    req.emplace_back();
+    MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_BYTE, neighbour_[26 - k], 27 + k, comm_, &req.back());
+  }
+  for (int k = 0; k < 27; ++k) {
+    if (neighbour_[k] < 0 || send[k].empty()) continue;
+    req.emplace_back();
+    MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_BYTE, neighbour_[k], 27 + k, comm_, &req.back());
+  }
+  MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+}
+
+std::size_t ParticleExchange::migrate(ParticleStore& s)
+{
+  s.dropGhosts();
+  for (auto& b : sendBuf_) b.clear();
+  std::vector<char> keep(s.nOwned, 1);
+  std::size_t sent = 0;
+  int o[3];
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    const int k = direction(s.x[i], o);
+    if (k == 13) continue;
+    // A wall axis has no neighbour beyond it: direction() clamps, so neighbour_[k] >= 0 here.
+    ParticleRecord r = s.record(i);
+    r.x = wrapped(r.x + shift_[k]);
+    putRecord(sendBuf_[k], r);
+    keep[i] = 0;
+    ++sent;
+  }
+  exchange(sendBuf_, recvBuf_, false);
+  s.compactOwned(keep);
+  int lost = 0;
+  for (int k = 0; k < 27; ++k) {
+    const char* p = recvBuf_[k].data();
+    const char* end = p + recvBuf_[k].size();
+    while (p < end) {
+      ParticleRecord r = getRecord(p);
+      r.x = wrapped(r.x);
+      if (!owns(r.x)) ++lost;
+      s.append(r);
+    }
+  }
+  s.nOwned = s.size();
+  int anyLost = 0;
+  MPI_Allreduce(&lost, &anyLost, 1, MPI_INT, MPI_SUM, comm_);
+  if (anyLost)
+    throw std::runtime_error(std::to_string(anyLost) + " particle(s) moved farther than one subdomain between two "
+                             "neighbour-list rebuilds (time step too large for the particle speeds)");
+  return sent;
+}
+
+void ParticleExchange::createGhosts(ParticleStore& s)
+{
+  s.dropGhosts();
+  for (int k = 0; k < 27; ++k) {
+    ghostSend_[k].clear();
+    sendBuf_[k].clear();
+    if (neighbour_[k] < 0) continue;
+    int o[3];
+    for (int d = 0; d < 3; ++d) o[d] = offsetOf(k, d);
+    for (std::size_t i = 0; i < s.nOwned; ++i) {
+      const Vec3& x = s.x[i];
+      bool near = true;
+      for (int d = 0; d < 3 && near; ++d)
+        near = o[d] == 0 || (o[d] > 0 ? x[d] >= boxHi_[d] - halo_ : x[d] < boxLo_[d] + halo_);
+      if (!near) continue;
+      ghostSend_[k].push_back(i);
+      put(sendBuf_[k], GhostData{s.id[i], s.radius[i], s.density[i], x + shift_[k], s.v[i], s.w[i], s.q[i], s.flags[i]});
+    }
+  }
+  exchange(sendBuf_, recvBuf_, false);
+  ParticleRecord r;
+  for (int k = 0; k < 27; ++k) {
+    const char* p = recvBuf_[k].data();
+    ghostRecv_[k] = recvBuf_[k].size() / sizeof(GhostData);
+    for (std::size_t g = 0; g < ghostRecv_[k]; ++g) {
+      const GhostData gd = get<GhostData>(p);
+      r.id = gd.id; r.radius = gd.radius; r.density = gd.density; r.flags = gd.flags;
+      r.x = gd.x; r.v = gd.v; r.w = gd.w; r.q = gd.q;
+      s.append(r);
+    }
+  }
+}
+
+void ParticleExchange::updateGhosts(ParticleStore& s)
+{
+  for (int k = 0; k < 27; ++k) {
+    sendBuf_[k].resize(ghostSend_[k].size() * sizeof(GhostState));
+    char* p = sendBuf_[k].data();
+    for (std::size_t i : ghostSend_[k]) {
+      const GhostState g{s.x[i] + shift_[k], s.v[i], s.w[i], s.q[i]};
+      std::memcpy(p, &g, sizeof g);
+      p += sizeof g;
+    }
+    recvBuf_[k].resize(ghostRecv_[k] * sizeof(GhostState));
+  }
+  exchange(sendBuf_, recvBuf_, true);
+  std::size_t g = s.nOwned;
+  for (int k = 0; k < 27; ++k) {
+    const char* p = recvBuf_[k].data();
+    for (std::size_t j = 0; j < ghostRecv_[k]; ++j, ++g) {
+      const GhostState st = get<GhostState>(p);
+      s.x[g] = st.x; s.v[g] = st.v; s.w[g] = st.w; s.q[g] = st.q;
+    }
+  }
+}
+
+} // namespace vp

@@ -1,0 +1,303 @@
+#include "vp/particles/Generators.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/particles/CellBuckets.hpp"
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <hdf5.h>
+#include <random>
+#include <sstream>
+#include <unordered_set>
+
+namespace vp {
+
+const char* const kParticleColumns[12] = {"id", "x", "y", "z", "radius", "density",
+                                          "vx", "vy", "vz", "wx", "wy", "wz"};
+
+namespace {
+
+[[noreturn]] void fail(const std::string& option, const std::string& what)
+{
+  throw InputError("option " + option + ": " + what);
+}
+
+// Fills a record from the 12 column values (order of kParticleColumns).
+ParticleRecord fromColumns(const double* v)
+{
+  ParticleRecord r;
+  r.id = static_cast<std::int64_t>(v[0]);
+  r.x = {v[1], v[2], v[3]};
+  r.radius = v[4];
+  r.density = v[5];
+  r.v = {v[6], v[7], v[8]};
+  r.w = {v[9], v[10], v[11]};
+  return r;
+}
+
+void checkValues(const double* v, const std::string& where)
+{
+  for (int c = 0; c < 12; ++c)
+    if (!std::isfinite(v[c]))
+      fail("-particles_file", where + ": column " + kParticleColumns[c] + " is not a finite number");
+  if (v[0] < 0 || v[0] != std::floor(v[0]) || v[0] > 9.0e15)
+    fail("-particles_file", where + ": id must be an integer >= 0");
+}
+
+// Uniform double in [0, 1) from 53 random bits (same sequence on every platform).
+double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+std::string str(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+} // namespace
+
+std::vector<ParticleRecord> readParticleCsv(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in) fail("-particles_file", "cannot open '" + path + "'");
+  std::string line;
+  if (!std::getline(in, line)) fail("-particles_file", "'" + path + "' is empty (needs a header line)");
+  std::vector<std::string> header;
+  {
+    std::stringstream h(line);
+    std::string name;
+    while (std::getline(h, name, ',')) {
+      name.erase(std::remove_if(name.begin(), name.end(), [](char ch) { return std::isspace(static_cast<unsigned char>(ch)); }), name.end());
+      header.push_back(name);
+    }
+  }
+  int column[12];
+  std::string missing;
+  for (int c = 0; c < 12; ++c) {
+    auto it = std::find(header.begin(), header.end(), kParticleColumns[c]);
+    column[c] = it == header.end() ? -1 : static_cast<int>(it - header.begin());
+    if (column[c] < 0) missing += std::string(missing.empty() ? "" : ",") + kParticleColumns[c];
+  }
+  if (!missing.empty())
+    fail("-particles_file", "'" + path + "' header lacks column(s) " + missing + " (needs id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)");
+  std::vector<ParticleRecord> out;
+  std::vector<std::string> cells;
+  long lineNo = 1;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    cells.clear();
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) cells.push_back(cell);
+    const std::string where = "'" + path + "' line " + std::to_string(lineNo);
+    if (cells.size() != header.size())
+      fail("-particles_file", where + " has " + std::to_string(cells.size()) + " values, the header has " + std::to_string(header.size()));
+    double v[12];
+    for (int c = 0; c < 12; ++c) {
+      const std::string& t = cells[column[c]];
+      char* end = nullptr;
+      v[c] = std::strtod(t.c_str(), &end);
+      while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+      if (end == t.c_str() || (end && *end != 0))
+        fail("-particles_file", where + ": column " + kParticleColumns[c] + " value '" + t + "' is not a number");
+    }
+    checkValues(v, where);
+    out.push_back(fromColumns(v));
+  }
+  return out;
+}
+
+std::vector<ParticleRecord> readParticleHdf5(const std::string& path)
+{
+  H5E_auto2_t func;
+  void* data;
+  H5Eget_auto2(H5E_DEFAULT, &func, &data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // report our own message instead of HDF5's trace
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  std::vector<std::vector<double>> col(12);
+  std::string error;
+  if (file < 0) error = "cannot open '" + path + "' as HDF5";
+  for (int c = 0; c < 12 && error.empty(); ++c) {
+    hid_t ds = H5Dopen2(file, kParticleColumns[c], H5P_DEFAULT);
+    if (ds < 0) {
+      error = "'" + path + "' lacks the dataset " + kParticleColumns[c] + " (needs 1-D datasets id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)";
+      break;
+    }
+    hid_t sp = H5Dget_space(ds);
+    hsize_t dims[2] = {0, 0};
+    const int rank = H5Sget_simple_extent_ndims(sp);
+    H5Sget_simple_extent_dims(sp, dims, nullptr);
+    if (rank != 1 || (c > 0 && dims[0] != col[0].size()))
+      error = "'" + path + "' dataset " + kParticleColumns[c] + " must be 1-D with one value per particle";
+    else {
+      col[c].resize(dims[0]);
+      if (dims[0] > 0 && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, col[c].data()) < 0)
+        error = "'" + path + "' dataset " + kParticleColumns[c] + " cannot be read as numbers";
+    }
+    H5Sclose(sp);
+    H5Dclose(ds);
+  }
+  if (file >= 0) H5Fclose(file);
+  H5Eset_auto2(H5E_DEFAULT, func, data);
+  if (!error.empty()) fail("-particles_file", error);
+  std::vector<ParticleRecord> out;
+  for (std::size_t i = 0; i < col[0].size(); ++i) {
+    double v[12];
+    for (int c = 0; c < 12; ++c) v[c] = col[c][i];
+    checkValues(v, "'" + path + "' row " + std::to_string(i));
+    out.push_back(fromColumns(v));
+  }
+  return out;
+}
+
+std::vector<ParticleRecord> latticeParticles(const LatticeInput& in, double density)
+{
+  std::mt19937_64 rng(in.seed);
+  const double amp = in.jitter * (0.5 * in.spacing - in.radius);
+  int n[3];
+  for (int d = 0; d < 3; ++d) n[d] = static_cast<int>(std::floor((in.hi[d] - in.lo[d]) / in.spacing + 1e-9));
+  std::vector<ParticleRecord> out;
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        ParticleRecord r;
+        r.id = static_cast<std::int64_t>(out.size());
+        r.radius = in.radius;
+        r.density = density;
+        const int idx[3] = {i, j, k};
+        for (int d = 0; d < 3; ++d)
+          r.x[d] = in.lo[d] + (idx[d] + 0.5) * in.spacing + amp * (2 * uniform(rng) - 1);
+        out.push_back(r);
+      }
+  return out;
+}
+
+std::vector<ParticleRecord> randomParticles(const RandomInput& in, double density)
+{
+  const double a = in.radius;
+  Vec3 size = in.hi - in.lo;
+  const double volume = size.x * size.y * size.z;
+  const auto target = static_cast<std::size_t>(std::llround(in.volumeFraction * volume / (4.0 / 3.0 * M_PI * a * a * a)));
+  // Random sequential addition on a grid of cells of one diameter: candidates overlap only
+  // spheres in the 27 surrounding cells.
+  int n[3];
+  for (int d = 0; d < 3; ++d) n[d] = std::max(1, static_cast<int>(size[d] / (2 * a)));
+  std::vector<std::vector<std::size_t>> cell(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+  auto cellOf = [&](const Vec3& p, int d) {
+    return std::min(n[d] - 1, std::max(0, static_cast<int>((p[d] - in.lo[d]) / size[d] * n[d])));
+  };
+  std::mt19937_64 rng(in.seed);
+  std::vector<ParticleRecord> out;
+  const std::size_t maxAttempts = 2000 * target + 1000;
+  for (std::size_t attempt = 0; attempt < maxAttempts && out.size() < target; ++attempt) {
+    Vec3 p;
+    for (int d = 0; d < 3; ++d) p[d] = in.lo[d] + a + (size[d] - 2 * a) * uniform(rng);
+    const int c[3] = {cellOf(p, 0), cellOf(p, 1), cellOf(p, 2)};
+    bool free = true;
+    for (int dz = -1; dz <= 1 && free; ++dz)
+      for (int dy = -1; dy <= 1 && free; ++dy)
+        for (int dx = -1; dx <= 1 && free; ++dx) {
+          const int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+          if (x < 0 || y < 0 || z < 0 || x >= n[0] || y >= n[1] || z >= n[2]) continue;
+          for (std::size_t j : cell[x + n[0] * (y + static_cast<std::size_t>(n[1]) * z)])
+            if (norm(out[j].x - p) < 2 * a) { free = false; break; }
+        }
+    if (!free) continue;
+    cell[c[0] + n[0] * (c[1] + static_cast<std::size_t>(n[1]) * c[2])].push_back(out.size());
+    ParticleRecord r;
+    r.id = static_cast<std::int64_t>(out.size());
+    r.radius = a;
+    r.density = density;
+    r.x = p;
+    out.push_back(r);
+  }
+  if (out.size() < target)
+    fail("-particles_random", "reached only " + std::to_string(out.size()) + " of " + std::to_string(target) +
+                                  " particles; lower the volume fraction");
+  return out;
+}
+
+void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, double maxOverlap, const std::string& option)
+{
+  std::unordered_set<std::int64_t> ids;
+  const char* axis = "xyz";
+  for (const ParticleRecord& r : p) {
+    const std::string who = "particle " + std::to_string(r.id);
+    if (!ids.insert(r.id).second) fail(option, "duplicate particle id " + std::to_string(r.id));
+    if (!(r.radius > 0)) fail(option, who + ": radius must be > 0, got " + str(r.radius));
+    if (!(r.density > 0)) fail(option, who + ": density must be > 0, got " + str(r.density));
+    for (int d = 0; d < 3; ++d) {
+      const double lo = c.grid.lo[d], hi = c.grid.hi[d];
+      // On a wall axis the sphere must fit (up to the overlap tolerance); on a periodic one the centre.
+      const double margin = c.bc.periodic(d) ? 0 : r.radius * (1 - 2 * maxOverlap);
+      if (!(r.x[d] >= lo + margin && r.x[d] <= hi - margin) || (c.bc.periodic(d) && r.x[d] == hi))
+        fail(option, who + " at " + axis[d] + " = " + str(r.x[d]) + " lies outside the domain [" + str(lo) + ", " +
+                         str(hi) + "] (sphere of radius " + str(r.radius) + ")");
+    }
+  }
+  if (p.empty()) return;
+  double rmax = 0;
+  Vec3 lo{c.grid.lo[0], c.grid.lo[1], c.grid.lo[2]}, hi{c.grid.hi[0], c.grid.hi[1], c.grid.hi[2]};
+  std::vector<Vec3> x(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    rmax = std::max(rmax, p[i].radius);
+    x[i] = p[i].x;
+  }
+  CellBuckets buckets;
+  buckets.build(x, x.size(), lo, hi, 2 * rmax);
+  auto check = [&](const ParticleRecord& a, const ParticleRecord& b, const Vec3& shift) {
+    const double overlap = a.radius + b.radius - norm(a.x - (b.x + shift));
+    if (overlap > maxOverlap * (a.radius + b.radius))
+      fail(option, "particles " + std::to_string(a.id) + " and " + std::to_string(b.id) + " overlap by " + str(overlap) +
+                       " m, more than -particles_max_overlap " + str(maxOverlap) + " of their mean diameter");
+  };
+  buckets.forEachCandidate(p.size(), [&](std::size_t i, std::size_t j) { check(p[i], p[j], {}); });
+  // Pairs across periodic faces: compare the spheres near a periodic face with the shifted others.
+  for (int d = 0; d < 3; ++d) {
+    if (!c.bc.periodic(d)) continue;
+    const double L = hi[d] - lo[d];
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p[i].x[d] > lo[d] + 2 * rmax) continue;
+      for (std::size_t j = 0; j < p.size(); ++j) {
+        if (p[j].x[d] < hi[d] - 2 * rmax || i == j) continue;
+        Vec3 s;
+        s[d] = -L;
+        check(p[i], p[j], s);
+      }
+    }
+  }
+}
+
+std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Config& c)
+{
+  std::vector<ParticleRecord> p;
+  std::string option;
+  if (!pc.file.empty()) {
+    const std::string& f = pc.file;
+    const bool h5 = f.size() > 3 && (f.compare(f.size() - 3, 3, ".h5") == 0 || (f.size() > 5 && f.compare(f.size() - 5, 5, ".hdf5") == 0));
+    p = h5 ? readParticleHdf5(f) : readParticleCsv(f);
+    option = "-particles_file";
+  } else if (pc.lattice.set) {
+    p = latticeParticles(pc.lattice, pc.density);
+    option = "-particles_lattice";
+  } else if (pc.random.set) {
+    p = randomParticles(pc.random, pc.density);
+    option = "-particles_random";
+  } else if (pc.single.set) {
+    ParticleRecord r;
+    r.id = 0;
+    r.radius = pc.radius;
+    r.density = pc.density;
+    r.x = pc.single.position;
+    r.v = pc.single.velocity;
+    r.w = pc.single.angularVelocity;
+    r.flags = pc.single.fixed ? kFixed : 0;
+    if (pc.single.fixed) r.v = r.w = Vec3{};
+    p.push_back(r);
+    option = "-particle_position";
+  }
+  validateParticles(p, c, pc.maxOverlap, option);
+  return p;
+}
+
+} // namespace vp

@@ -1,0 +1,91 @@
+#include "vp/particles/ParticleStore.hpp"
+#include <cmath>
+
+namespace vp {
+
+void ParticleStore::resize(std::size_t n)
+{
+  id.resize(n);
+  radius.resize(n);
+  density.resize(n);
+  flags.resize(n);
+  mass.resize(n);
+  invMass.resize(n);
+  invInertia.resize(n);
+  x.resize(n);
+  v.resize(n);
+  w.resize(n);
+  q.resize(n);
+  force.resize(n);
+  torque.resize(n);
+  fhyd.resize(n);
+  thyd.resize(n);
+  xRebuild.resize(n);
+  wallSpring.resize(n);
+  history.resize(n);
+}
+
+void ParticleStore::append(const ParticleRecord& r)
+{
+  const std::size_t i = size();
+  resize(i + 1);
+  id[i] = r.id;
+  radius[i] = r.radius;
+  density[i] = r.density;
+  flags[i] = r.flags;
+  const double m = density[i] * 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
+  mass[i] = m;
+  invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
+  invInertia[i] = (r.flags & kFixed) ? 0 : 1 / (0.4 * m * radius[i] * radius[i]);
+  x[i] = r.x;
+  v[i] = r.v;
+  w[i] = r.w;
+  q[i] = r.q;
+  force[i] = r.force;
+  torque[i] = r.torque;
+  fhyd[i] = r.fhyd;
+  thyd[i] = r.thyd;
+  xRebuild[i] = r.x;
+  wallSpring[i] = r.wallSpring;
+  history[i] = r.history;
+}
+
+ParticleRecord ParticleStore::record(std::size_t i) const
+{
+  ParticleRecord r;
+  r.id = id[i];
+  r.radius = radius[i];
+  r.density = density[i];
+  r.flags = flags[i];
+  r.x = x[i];
+  r.v = v[i];
+  r.w = w[i];
+  r.q = q[i];
+  r.force = force[i];
+  r.torque = torque[i];
+  r.fhyd = fhyd[i];
+  r.thyd = thyd[i];
+  r.wallSpring = wallSpring[i];
+  r.history = history[i];
+  return r;
+}
+
+void ParticleStore::compactOwned(const std::vector<char>& keep)
+{
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < nOwned; ++i) {
+    if (!keep[i]) continue;
+    if (k != i) {
+      id[k] = id[i]; radius[k] = radius[i]; density[k] = density[i]; flags[k] = flags[i];
+      mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i];
+      x[k] = x[i]; v[k] = v[i]; w[k] = w[i]; q[k] = q[i];
+      force[k] = force[i]; torque[k] = torque[i]; fhyd[k] = fhyd[i]; thyd[k] = thyd[i];
+      xRebuild[k] = xRebuild[i]; wallSpring[k] = wallSpring[i]; history[k] = std::move(history[i]);
+    }
+    ++k;
+  }
+  nOwned = k;
+  resize(k);
+}
+
+} // namespace vp
