@@ -25,6 +25,8 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
   : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c))
 {
+  for (int f = 0; f < 6; ++f)
+    if (walls_[f].active) activeWalls_.push_back(f);
   setUp(all);
 }
 
@@ -91,15 +93,19 @@ void DemSolver::computeForces(double dt)
     const double r2 = dot(d, d);
     const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
     if (r2 >= reach * reach) {
-      P.spring[k] = P.force[k] = P.lever[k] = Vec3{};
+      P.spring[k] = Vec3{};
+      P.active[k] = 0;
       continue;
     }
+    P.active[k] = 1;
     const double r = std::sqrt(r2);
-    const Vec3 n = d / r;
-    const Vec3 vc = contactVelocity(s.v[i], s.w[i], s.radius[i], s.v[j], s.w[j], s.radius[j], n);
+    const Vec3 n = (1 / r) * d;
+    // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
+    const double scale = r / (s.radius[i] + s.radius[j]);
+    const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
     const ContactForce f = contactForce(n, reach - r, vc, P.coef[k], P.spring[k], dt);
     P.force[k] = f.normal + f.tangential;
-    P.lever[k] = cross(n, f.tangential);
+    P.lever[k] = scale * cross(n, f.tangential);
     // Sphere-sphere lubrication (interactions/Lubrication) adds its force and n x F_t here, from
     // the same pair state (n, gap = r - a_i - a_j, relative velocity), before the sums below.
     contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
@@ -111,24 +117,26 @@ void DemSolver::computeForces(double dt)
     const double a = s.radius[i];
     for (std::uint32_t e = P.incStart[i]; e < P.incStart[i + 1]; ++e) {
       const std::uint32_t k = P.incPair[e];
+      if (!P.active[k]) continue;  // skipping a zero keeps the sum bitwise the same
       F += P.incSign[e] * P.force[k];
       T -= a * P.lever[k];
     }
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    for (int f = 0; f < 6; ++f) {
+    for (int f : activeWalls_) {
       const Wall& wall = walls_[f];
-      if (!wall.active) continue;
-      const double overlap = a * (1 + 2 * rough) - wall.distance(s.x[i]);
+      const double dist = wall.distance(s.x[i]);
+      const double overlap = a * (1 + 2 * rough) - dist;
       Vec3& spring = s.wallSpring[i][f];
       if (overlap <= 0 || s.fixed(i)) {
         spring = Vec3{};
         continue;
       }
       const Vec3 n = wall.normal();
-      const Vec3 vc = s.v[i] - cross(a * s.w[i], n) - wall.velocity;
+      // The contact point lies on the wall plane: lever arm = distance.
+      const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
       const ContactForce c = contactForce(n, overlap, vc, law_.coefficients(s.mass[i], true), spring, dt);
       F += c.normal + c.tangential;
-      T -= a * cross(n, c.tangential);
+      T -= dist * cross(n, c.tangential);
       // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
       ++wallContacts;
     }

@@ -27,6 +27,7 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
   });
   force.assign(size(), Vec3{});
   lever.assign(size(), Vec3{});
+  active.assign(size(), 0);
 
   // Incidence of each owned particle, sorted by partner id.
   incStart.assign(s.nOwned + 1, 0);

@@ -64,11 +64,12 @@ inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, 
   return {fnMag * n, ft};
 }
 
-// Velocity of sphere i's contact point relative to sphere j's, n pointing from j to i.
-inline Vec3 contactVelocity(const Vec3& vi, const Vec3& wi, double ai, const Vec3& vj, const Vec3& wj, double aj,
+// Velocity of sphere i's contact point relative to sphere j's, n pointing from j to i; li, lj are
+// the distances from the centres to the contact point.
+inline Vec3 contactVelocity(const Vec3& vi, const Vec3& wi, double li, const Vec3& vj, const Vec3& wj, double lj,
                             const Vec3& n)
 {
-  return vi - vj - cross(ai * wi + aj * wj, n);
+  return vi - vj - cross(li * wi + lj * wj, n);
 }
 
 } // namespace vp

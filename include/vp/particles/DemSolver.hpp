@@ -56,6 +56,7 @@ private:
   ContactLaw law_;
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
+  std::vector<int> activeWalls_;
   double skin_ = 0;        // neighbour-list skin [m]
   double rmax_ = 0;
   std::unique_ptr<ParticleExchange> exchange_;

@@ -18,7 +18,8 @@ struct PairList {
   std::vector<ContactCoefficients> coef;
   std::vector<Vec3> spring;                    // tangential spring (canonical orientation)
   std::vector<Vec3> force;                     // on `first`; `second` gets -force
-  std::vector<Vec3> lever;                     // n x F_t: torque on either sphere is -radius * lever
+  std::vector<Vec3> lever;                     // (r / (a_i + a_j)) n x F_t: torque on either sphere is -radius * lever
+  std::vector<std::uint8_t> active;            // in contact at the last force evaluation
   std::vector<std::uint32_t> incStart;         // per owned particle, into incPair / incSign
   std::vector<std::uint32_t> incPair;
   std::vector<double> incSign;                 // +1: particle is `first`, -1: `second`
