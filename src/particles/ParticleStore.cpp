@@ -21,6 +21,8 @@ void ParticleStore::resize(std::size_t n)
   fhyd.resize(n);
   thyd.resize(n);
   xRebuild.resize(n);
+  vHalf.resize(n);
+  wHalf.resize(n);
   wallSpring.resize(n);
   history.resize(n);
 }
@@ -46,6 +48,8 @@ void ParticleStore::append(const ParticleRecord& r)
   fhyd[i] = r.fhyd;
   thyd[i] = r.thyd;
   xRebuild[i] = r.x;
+  vHalf[i] = r.vHalf;
+  wHalf[i] = r.wHalf;
   wallSpring[i] = r.wallSpring;
   history[i] = r.history;
 }
@@ -65,6 +69,8 @@ ParticleRecord ParticleStore::record(std::size_t i) const
   r.torque = torque[i];
   r.fhyd = fhyd[i];
   r.thyd = thyd[i];
+  r.vHalf = vHalf[i];
+  r.wHalf = wHalf[i];
   r.wallSpring = wallSpring[i];
   r.history = history[i];
   return r;
@@ -80,7 +86,7 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
       mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i];
       x[k] = x[i]; v[k] = v[i]; w[k] = w[i]; q[k] = q[i];
       force[k] = force[i]; torque[k] = torque[i]; fhyd[k] = fhyd[i]; thyd[k] = thyd[i];
-      xRebuild[k] = xRebuild[i]; wallSpring[k] = wallSpring[i]; history[k] = std::move(history[i]);
+      xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i]; wallSpring[k] = wallSpring[i]; history[k] = std::move(history[i]);
     }
     ++k;
   }

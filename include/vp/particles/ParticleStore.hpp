@@ -18,6 +18,7 @@ struct ParticleRecord {
   double radius = 0, density = 0;
   std::uint8_t flags = 0;
   Vec3 x, v, w, force, torque, fhyd, thyd;
+  Vec3 vHalf, wHalf;                  // a particle may migrate inside a sub-step
   Quaternion q;
   std::array<Vec3, 6> wallSpring{};   // tangential springs against the six walls
   ContactHistory history;             // springs against other particles
@@ -36,6 +37,7 @@ struct ParticleStore {
   // Owned only (ghost entries unused): total force/torque of the last sub-step, the fixed
   // hydrodynamic force/torque of the current fluid step, springs and position at the last rebuild.
   std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
+  std::vector<Vec3> vHalf, wHalf;   // mid-step velocities inside a DEM sub-step
   std::vector<std::array<Vec3, 6>> wallSpring;
   std::vector<ContactHistory> history;
 
