@@ -157,7 +157,7 @@ void ParticleExchange::exchange(const Buffers& send, Buffers& recv, bool knownSi
   std::array<unsigned long, 27> sendSize{}, recvSize{};
   if (!knownSizes) {
     for (int k = 0; k < 27; ++k) {
-      if (neighbour_[k] < 0 || neighbour_[26 - k] < 0) continue;
+      if (neighbour_[26 - k] < 0) continue;
       req.emplace_back();
       MPI_Irecv(&recvSize[k], 1, MPI_UNSIGNED_LONG, neighbour_[26 - k], k, comm_, &req.back());
     }
@@ -172,7 +172,7 @@ void ParticleExchange::exchange(const Buffers& send, Buffers& recv, bool knownSi
     for (int k = 0; k < 27; ++k) recv[k].resize(recvSize[k]);
   }
   for (int k = 0; k < 27; ++k) {
-    if (neighbour_[k] < 0 || neighbour_[26 - k] < 0 || recv[k].empty()) continue;
+    if (neighbour_[26 - k] < 0 || recv[k].empty()) continue;
     req.emplace_back();
     MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_BYTE, neighbour_[26 - k], 27 + k, comm_, &req.back());
   }
