@@ -1,0 +1,72 @@
+// Rank-count invariance: contacts split across rank boundaries (sliding, sticking, a sphere sliding
+// along a wall from rank to rank) and the dry granular collapse give bitwise the same particles on
+// any number of ranks as on one.
+#include "../support/DemFixtures.hpp"
+#include "vp/particles/Generators.hpp"
+#include <catch2/catch.hpp>
+
+using namespace vp;
+using namespace vp::test;
+
+namespace {
+
+std::vector<State> run(MPI_Comm comm, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& p,
+                       double dt, int steps)
+{
+  Grid grid(comm, c.grid, c.bc);
+  DemSolver dem(grid, c, pc, p);
+  for (int k = 0; k < steps; ++k) dem.advance(k * dt, dt);
+  return gatherState(comm, dem.particles());
+}
+
+} // namespace
+
+TEST_CASE("Sliding and sticking contacts across rank boundaries equal the one-rank result", "[mpi]")
+{
+  Config c = boxConfig({0, 0, 0}, {1, 0.4, 0.4}, {12, 2, 2});
+  c.gravity = {0, 0, -9.81};
+  ParticleConfig pc = contactConfig(0.01, 0.8, 0.3);
+  const double a = 0.05;
+  std::vector<ParticleRecord> p = {
+    // Sliding pair around x = 1/3: tangential speed well above the critical incidence.
+    sphere(1, {1.0 / 3 - 0.06, 0.15, 0.25}, a, 2000, {0.2, 0.6, 0.1}),
+    sphere(2, {1.0 / 3 + 0.06, 0.18, 0.25}, a, 2500, {-0.2, -0.5, 0}, {0, 3, 0}),
+    // Sticking pair around x = 1/2: small tangential speed.
+    sphere(3, {0.5 - 0.06, 0.20, 0.25}, a, 2000, {0.2, 0.01, 0}),
+    sphere(4, {0.5 + 0.06, 0.20, 0.26}, a, 2000, {-0.2, 0, 0}, {0, 0, 0.5}),
+    // Sliding pair around x = 2/3 with spin.
+    sphere(5, {2.0 / 3 - 0.06, 0.18, 0.2}, a, 2000, {0.25, 0.3, 0}, {10, 0, -5}),
+    sphere(6, {2.0 / 3 + 0.06, 0.20, 0.2}, a, 2000, {-0.1, 0, 0.3}),
+    // Sliding then rolling along the floor across every rank boundary, carrying its wall spring.
+    sphere(7, {0.1, 0.35 - 1e-3, a}, a, 2500, {2.5, 0, 0}),
+  };
+  const double dt = 0.01 / 50;
+  const std::vector<State> parallel = run(PETSC_COMM_WORLD, c, pc, p, dt, 2000);
+  const std::vector<State> serial = run(PETSC_COMM_SELF, c, pc, p, dt, 2000);
+  REQUIRE(parallel.size() == p.size());
+  // The rolling sphere really crossed the domain.
+  INFO("rolling sphere at x = " << parallel[6].x.x);
+  CHECK(parallel[6].x.x > 0.7);
+  CHECK(bitwiseEqual(parallel, serial));
+}
+
+TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[mpi][collapse]")
+{
+  // The benchmark case (ARCHITECTURE.md 10; shared/benchmarks/dem): 2000 settled spheres,
+  // kn = 200 N/m, e = 0.9, mu = 0.25, dt = 3.6e-6 s, walls all round.
+  Config c = boxConfig({0, 0, 0}, {0.15, 0.0105, 0.04}, {8, 16, 4});
+  c.gravity = {0, 0, -9.81};
+  ParticleConfig pc;
+  pc.contact.kn = 200;
+  pc.contact.restitution = 0.9;
+  pc.contact.friction = 0.25;
+  const std::vector<ParticleRecord> p = readParticleCsv(VP_SOURCE_DIR "/cases/data/column_2000.csv");
+  REQUIRE(p.size() == 2000);
+  const std::vector<State> parallel = run(PETSC_COMM_WORLD, c, pc, p, 3.6e-6, 2000);
+  const std::vector<State> serial = run(PETSC_COMM_SELF, c, pc, p, 3.6e-6, 2000);
+  REQUIRE(parallel.size() == 2000);
+  double maxSpeed = 0;
+  for (const State& s : serial) maxSpeed = std::max(maxSpeed, norm(s.v));
+  CHECK(maxSpeed > 0.01);  // the column is collapsing
+  CHECK(bitwiseEqual(parallel, serial));
+}
