@@ -86,6 +86,8 @@ void DemSolver::computeForces(double dt)
   ParticleStore& s = store_;
   PairList& P = pairs_;
   const double rough = law_.roughness();
+  // Ghost entries collect partial sums too (never used): no branch in the scatter.
+  for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
   long contacts = 0;
   for (std::size_t k = 0; k < P.size(); ++k) {
     const std::uint32_t i = P.first[k], j = P.second[k];
@@ -94,33 +96,30 @@ void DemSolver::computeForces(double dt)
     const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
     if (r2 >= reach * reach) {
       P.spring[k] = Vec3{};
-      P.active[k] = 0;
       continue;
     }
-    P.active[k] = 1;
     const double r = std::sqrt(r2);
     const Vec3 n = (1 / r) * d;
     // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
     const double scale = r / (s.radius[i] + s.radius[j]);
     const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
     const ContactForce f = contactForce(n, reach - r, vc, P.coef[k], P.spring[k], dt);
-    P.force[k] = f.normal + f.tangential;
-    P.lever[k] = scale * cross(n, f.tangential);
-    // Sphere-sphere lubrication (interactions/Lubrication) adds its force and n x F_t here, from
-    // the same pair state (n, gap = r - a_i - a_j, relative velocity), before the sums below.
+    const Vec3 force = f.normal + f.tangential;
+    const Vec3 lever = scale * cross(n, f.tangential);
+    // Sphere-sphere lubrication (interactions/Lubrication) adds its force and torque lever here,
+    // from the same pair state (n, gap = r - a_i - a_j, relative velocity), before the scatter.
+    // Pairs are sorted by (first id, second id): each particle receives in ascending partner id.
+    s.force[i] += force;
+    s.torque[i] -= s.radius[i] * lever;
+    s.force[j] -= force;
+    s.torque[j] -= s.radius[j] * lever;
     contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
   }
 
   long wallContacts = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    Vec3 F, T;
+    Vec3 F = s.force[i], T = s.torque[i];
     const double a = s.radius[i];
-    for (std::uint32_t e = P.incStart[i]; e < P.incStart[i + 1]; ++e) {
-      const std::uint32_t k = P.incPair[e];
-      if (!P.active[k]) continue;  // skipping a zero keeps the sum bitwise the same
-      F += P.incSign[e] * P.force[k];
-      T -= a * P.lever[k];
-    }
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
     for (int f : activeWalls_) {
       const Wall& wall = walls_[f];
