@@ -117,6 +117,8 @@ void DemSolver::computeForces(double dt)
   }
 
   long wallContacts = 0;
+  double coefMass = -1;  // wall coefficients depend on the mass only: reuse them along equal masses
+  ContactCoefficients wallCoef;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
     const double a = s.radius[i];
@@ -133,7 +135,11 @@ void DemSolver::computeForces(double dt)
       const Vec3 n = wall.normal();
       // The contact point lies on the wall plane: lever arm = distance.
       const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
-      const ContactForce c = contactForce(n, overlap, vc, law_.coefficients(s.mass[i], true), spring, dt);
+      if (s.mass[i] != coefMass) {
+        coefMass = s.mass[i];
+        wallCoef = law_.coefficients(coefMass, true);
+      }
+      const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
       F += c.normal + c.tangential;
       T -= dist * cross(n, c.tangential);
       // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
@@ -170,11 +176,14 @@ void DemSolver::substep(double dt)
   else
     exchange_->updateGhosts(s);
   computeForces(dt);
+  double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (s.fixed(i)) continue;
     s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (s.force[i] + s.fhyd[i]);
     s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (s.torque[i] + s.thyd[i]);
+    ke += s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i];
   }
+  kineticEnergy_ = 0.5 * ke;
 }
 
 void DemSolver::advance(double, double dt)
@@ -185,19 +194,20 @@ void DemSolver::advance(double, double dt)
 
 DemDiagnostics DemSolver::diagnostics() const
 {
-  const ParticleStore& s = store_;
-  double ke = 0;
-  for (std::size_t i = 0; i < s.nOwned; ++i) {
-    if (s.fixed(i)) continue;
-    ke += 0.5 * s.mass[i] * dot(s.v[i], s.v[i]) + 0.5 / s.invInertia[i] * dot(s.w[i], s.w[i]);
+  double ke = kineticEnergy_;
+  if (ke < 0) {  // before the first step
+    ke = 0;
+    const ParticleStore& s = store_;
+    for (std::size_t i = 0; i < s.nOwned; ++i)
+      if (!s.fixed(i)) ke += 0.5 * (s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i]);
   }
-  long local[3] = {static_cast<long>(s.nOwned), contacts_, wallContacts_}, global[3];
+  double local[4] = {ke, double(store_.nOwned), double(contacts_), double(wallContacts_)}, global[4];
+  MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_SUM, grid_.comm());
   DemDiagnostics d;
-  MPI_Allreduce(&ke, &d.kineticEnergy, 1, MPI_DOUBLE, MPI_SUM, grid_.comm());
-  MPI_Allreduce(local, global, 3, MPI_LONG, MPI_SUM, grid_.comm());
-  d.particles = global[0];
-  d.contacts = global[1];
-  d.wallContacts = global[2];
+  d.kineticEnergy = global[0];
+  d.particles = std::lround(global[1]);
+  d.contacts = std::lround(global[2]);
+  d.wallContacts = std::lround(global[3]);
   return d;
 }
 

@@ -64,6 +64,7 @@ private:
   CellBuckets buckets_;
   PairList pairs_;
   long contacts_ = 0, wallContacts_ = 0;
+  double kineticEnergy_ = -1;   // of the owned particles after the last sub-step (-1: none yet)
   std::size_t migrations_ = 0, rebuilds_ = 0;
 };
 
