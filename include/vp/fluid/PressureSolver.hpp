@@ -1,5 +1,6 @@
 #pragma once
-// The pressure Poisson problem A psi = b, with A = -lap_h the cell-centred 7-point operator with
+// The pressure Poisson problem -lap_h psi = b, solved as A psi = V b with A = -V lap_h (V the cell
+// volume: the finite-volume form, which multigrid coarsens well), lap_h the cell-centred 7-point operator with
 // zero normal gradient at walls (symmetric positive semi-definite; the constant null space is
 // attached). KSP prefix -pressure_. Defaults: CG + hypre BoomerAMG tuned for the 3-D 7-point
 // Laplacian (see docs/solvers.md); -pressure_pc_type mg (geometric multigrid on the DMDA with
@@ -17,10 +18,11 @@ public:
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;
 
-  // Solves A x = b (b is made consistent by removing its mean); x holds the initial guess.
-  // atol: absolute residual tolerance used unless -pressure_ksp_atol is given. Returns iterations.
+  // Solves -lap_h x = b; b is overwritten (scaled by V, made consistent by removing its mean); x
+  // holds the initial guess. atol: absolute tolerance on -lap_h x - b unless -pressure_ksp_atol is
+  // given (then it applies to the scaled system). Returns iterations.
   int solve(Vec b, Vec x, double atol);
-  Mat matrix() const;
+  Mat matrix() const;  // A = -V lap_h
   KSP ksp() const { return ksp_; }
 
   struct Box {
