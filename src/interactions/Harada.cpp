@@ -23,13 +23,11 @@ void HaradaModel::step()
   const double a = p_.radius, mu = p_.viscosity, rho = p_.fluidDensity, dt = p_.dt;
   const double hCol = 2 * a * p_.roughness;
   const double h = y_ - a;
+  const bool held = h < hCol;
   const double eps = std::max(h, hCol) / a; // lubrication and image series are held at the roughness
-
-  // Implicit velocity coefficients: F = explicit + c * v^{n+1}; lhs = inertia / dt.
-  double inertia = mass_, explicitForce = 0, coefficient = 0;
   const double weight = (mass_ - 2 * addedMass0_) * p_.gravity; // (m - m_f) g
-  explicitForce += weight;
 
+  // Each force is written explicit part + implicit coefficient times v^{n+1}.
   double cDrag = 0, cLub = 0, mAdded = 0, cImage = 0, cBasset = 0, bassetLagged = 0;
   if (p_.drag) {
     const double re = rho * std::fabs(v_) * 2 * a / mu;
@@ -39,8 +37,9 @@ void HaradaModel::step()
   if (p_.addedMass) {
     const AddedMassCoefficient C = p_.imageSeries ? wallAddedMass(eps) : AddedMassCoefficient{1, 0};
     mAdded = addedMass0_ * C.value;
-    // (1/2) dm'/dt v = (1/2) (dm'/dy) v^2, linearised as (1/2) (dm'/dy) v^n v^{n+1}.
-    cImage = 0.5 * addedMass0_ * C.derivative / a * v_;
+    // (1/2) dm'/dt v = (1/2) (dm'/dy) v^2, linearised as (1/2) (dm'/dy) v^n v^{n+1}; m' is
+    // constant where it is held.
+    if (!held) cImage = 0.5 * addedMass0_ * C.derivative / a * v_;
   }
   if (p_.history) {
     const double K = 6 * a * a * std::sqrt(M_PI * rho * mu);
@@ -48,14 +47,14 @@ void HaradaModel::step()
     bassetLagged = K * basset_.lagged();
   }
   double spring = 0, cContact = 0;
-  if (p_.contact && h < hCol) {
+  if (p_.contact && held) {
     spring = stiffness_ * (hCol - h);
     cContact = damping_;
   }
 
-  inertia += mAdded;
-  coefficient = cDrag + cLub + cImage + cBasset + cContact;
-  explicitForce += spring - bassetLagged + cBasset * v_;
+  const double inertia = mass_ + mAdded;
+  const double coefficient = cDrag + cLub + cImage + cBasset + cContact;
+  const double explicitForce = weight + spring - bassetLagged + cBasset * v_;
   const double vNew = (inertia / dt * v_ + explicitForce) / (inertia / dt + coefficient);
 
   forces_.weight = weight;

@@ -10,9 +10,10 @@ PairForce llcmForce(const PairState& s, double region)
   const double h = s.gap;
   const double mu = s.viscosity;
   const double H0 = h + 0.5 * region * region * R;
-  // x = 1 - h/H0 = r0^2/(2R H0); log1p keeps ln(H0/h) and J3 accurate when the region is small.
+  // x = 1 - h/H0 = r0^2/(2R H0). ln(H0/h) = -log1p(-x) stays accurate when x is small (small
+  // region or large gap); the direct ratio is accurate when x is close to 1 (small gap).
   const double x = 0.5 * region * region * R / H0;
-  const double J1 = -std::log1p(-x);
+  const double J1 = x < 0.5 ? -std::log1p(-x) : std::log(H0 / h);
   const double J3 = J1 - x;
 
   PairForce f = blcmForce(s);

@@ -46,7 +46,7 @@ void tangentBasis(const Vec3& n, Vec3& e1, Vec3& e2)
   e2 = cross(n, e1);
 }
 
-// 20-point Gauss-Legendre nodes and weights on [-1, 1] (Golub-Welsch via Newton on P_20).
+// m-point Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on P_m).
 void gaussLegendre(int m, std::vector<double>& x, std::vector<double>& w)
 {
   x.resize(m);
