@@ -11,7 +11,7 @@ AddedMassCoefficient wallAddedMass(double eps)
   double product = 1 / (f * f * f), dLogProduct = -3 * df / f; // prod (1/f_k)^3 and d ln(prod)/deps
   double sum = product, dsum = product * dLogProduct;
   // Near contact the ratio of successive terms tends to (1 + sqrt(2 eps))^-3; the cap only binds
-  // for eps below about 1e-10, far inside any roughness gap.
+  // for eps below about 1e-12, far inside any roughness gap.
   for (int k = 1; k < 10000000 && product > 1e-16 * sum; ++k) {
     df = 2 + df / (f * f);
     f = f0 - 1 / f;
