@@ -1,30 +1,58 @@
-// vpsolve (particle branch): DEM-only runs (-fluid_off) until the Simulation from main drives both
-// the fluid and the particles.
-#include "vp/core/Config.hpp"
+// vpsolve: particle-resolved simulation of particle-laden flows (see README.md).
+#include "vp/Simulation.hpp"
 #include "vp/core/Error.hpp"
-#include "vp/particles/DryRun.hpp"
-#include "vp/particles/ParticleConfig.hpp"
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <petscsys.h>
+
+static const char help[] =
+  "vpsolve: incompressible Navier-Stokes on a staggered grid with resolved particles.\n"
+  "usage: mpirun -n 2 vpsolve -options_file cases/taylor_green.opts [options]\n\n";
+
+// PETSc would fail on a missing options file with a long trace: say it in one line instead.
+static bool optionsFilesReadable(int argc, char** argv)
+{
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "-options_file") != 0) continue;
+    if (std::FILE* f = std::fopen(argv[i + 1], "r")) {
+      std::fclose(f);
+      continue;
+    }
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (!rank || std::strcmp(rank, "0") == 0)
+      std::fprintf(stderr, "vpsolve: error: option -options_file: cannot open '%s': %s\n", argv[i + 1], std::strerror(errno));
+    return false;
+  }
+  return true;
+}
 
 int main(int argc, char** argv)
 {
-  if (PetscInitialize(&argc, &argv, nullptr, "vpsolve: particle-resolved particle-laden flows\n") != 0) return 1;
-  int rank;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  int status = 0;
+  if (!optionsFilesReadable(argc, argv)) return 1;
+  if (PetscInitialize(&argc, &argv, nullptr, help) != 0) return 1;
+  PetscBool userLeft;
+  PetscOptionsHasName(nullptr, nullptr, "-options_left", &userLeft);
+  int rc = 0;
   try {
-    const vp::Config c = vp::Config::fromOptions(PETSC_COMM_WORLD);
-    const vp::ParticleConfig pc = vp::ParticleConfig::fromOptions(PETSC_COMM_WORLD);
-    if (!c.fluid.off) throw vp::InputError("option -fluid_off: this build runs DEM only; add -fluid_off");
-    vp::runDryDem(PETSC_COMM_WORLD, c, pc);
+    vp::Config cfg = vp::Config::fromOptions(PETSC_COMM_WORLD);
+    vp::Simulation sim(PETSC_COMM_WORLD, cfg);
+    PetscBool help = PETSC_FALSE;
+    PetscOptionsHasHelp(nullptr, &help);
+    if (!help) sim.run();
   } catch (const vp::InputError& e) {
-    if (rank == 0) std::fprintf(stderr, "vpsolve: error: %s\n", e.what());
-    status = 2;
+    PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "vpsolve: error: %s\n", e.what());
+    rc = 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "vpsolve: rank %d: %s\n", rank, e.what());
-    status = 1;
+    // Not necessarily raised on every rank: abort the whole job rather than hang.
+    std::fprintf(stderr, "vpsolve: error: %s\n", e.what());
+    MPI_Abort(PETSC_COMM_WORLD, 2);
   }
+  // Misspelt options would otherwise be ignored silently by this (non-debug) PETSc build.
+  PetscInt unused = 0;
+  PetscOptionsAllUsed(nullptr, &unused);
+  if (!userLeft && unused > 0) PetscOptionsLeft(nullptr);
   PetscFinalize();
-  return status;
+  return rc;
 }

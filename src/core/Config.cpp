@@ -160,6 +160,8 @@ void Config::validate() const
     if (grid.n[d] < 1) fail("-grid_n", std::string("cells along ") + axis[d] + " must be >= 1, got " + std::to_string(grid.n[d]));
     if (!(grid.hi[d] > grid.lo[d]))
       fail("-grid_hi", std::string("upper corner must exceed -grid_lo along ") + axis[d] + " (" + str(grid.hi[d]) + " <= " + str(grid.lo[d]) + ")");
+    if (!bc.periodic(d) && grid.n[d] < 2)
+      fail("-grid_n", std::string("a wall-bounded axis needs >= 2 cells, ") + axis[d] + " has " + std::to_string(grid.n[d]));
     bool plo = bc.type[2 * d] == BcType::Periodic, phi = bc.type[2 * d + 1] == BcType::Periodic;
     if (plo != phi)
       fail(std::string("-bc_") + kFaceNames[2 * d + (plo ? 1 : 0)],

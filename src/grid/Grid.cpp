@@ -41,11 +41,11 @@ Grid::Grid(MPI_Comm comm, const GridConfig& g, const BoundaryConfig& bc) : comm_
   VP_CALL(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, n_[0], n_[1], n_[2], m, np, p, 3, 1,
                        lx, ly, lz, &faceDM_));
   VP_CALL(DMSetUp(faceDM_));
-  // Matrices of the three decoupled velocity components: 7 entries per row, not 27 x 3.
+  // Matrices of the three decoupled velocity components: 7 entries per row, preallocated by
+  // their owner (DMDA block fills need periodic sizes divisible by 3, the default 21 per row).
   VP_CALL(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n_[0], n_[1], n_[2], m, np, p, 3, 1,
                        lx, ly, lz, &faceSolveDM_));
-  PetscInt fill[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  VP_CALL(DMDASetBlockFills(faceSolveDM_, fill, fill));
+  VP_CALL(DMSetMatrixPreallocateSkip(faceSolveDM_, PETSC_TRUE));
   VP_CALL(DMSetUp(faceSolveDM_));
   VP_CALL(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n_[0], n_[1], n_[2], m, np, p, 3, 0,
                        lx, ly, lz, &cellVectorDM_));

@@ -1,5 +1,6 @@
 #include "vp/particles/DemSolver.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Logging.hpp"
 #include "vp/particles/Generators.hpp"
 #include <algorithm>
 #include <cmath>
@@ -61,6 +62,7 @@ bool DemSolver::needRebuild() const
 
 void DemSolver::rebuild()
 {
+  StageScope stage(Stage::Exchange);
   ParticleStore& s = store_;
   for (std::size_t i = 0; i < s.nOwned; ++i) s.history[i].clear();
   pairs_.exportHistory(s);
@@ -188,6 +190,7 @@ void DemSolver::substep(double dt)
 
 void DemSolver::advance(double, double dt)
 {
+  StageScope stage(Stage::DEM);
   const double dtp = dt / pc_.substeps;
   for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
 }

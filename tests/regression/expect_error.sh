@@ -1,8 +1,8 @@
-#!/bin/sh
-# usage: expect_error.sh <regex> <command> [args...]
-# Passes when the command exits non-zero and its output matches the (extended) regex.
-pattern=$1; shift
-out=$("$@" 2>&1); rc=$?
-printf '%s\n' "$out"
-if [ "$rc" -eq 0 ]; then echo "expected a non-zero exit, got 0"; exit 1; fi
-printf '%s\n' "$out" | grep -Eq -e "$pattern" || { echo "expected output matching: $pattern"; exit 1; }
+#!/usr/bin/env bash
+# usage: expect_error.sh <np> <regex> <command...>
+# Passes when the command (run under mpirun -n np) exits non-zero AND its output matches regex.
+np=$1; regex=$2; shift 2
+out=$(mpirun -n "$np" --oversubscribe "$@" 2>&1); rc=$?
+if [ $rc -eq 0 ]; then echo "expected a non-zero exit, got 0; output:"; echo "$out"; exit 1; fi
+if ! grep -qE -- "$regex" <<<"$out"; then echo "exit $rc but no message matching '$regex'; output:"; echo "$out"; exit 1; fi
+grep -E -- "$regex" <<<"$out" | head -n 1

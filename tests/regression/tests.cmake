@@ -1,8 +1,46 @@
 # vpsolve executable tests (bad input, short case runs); included from tests/CMakeLists.txt.
+set(VP_EXPECT_ERROR ${CMAKE_CURRENT_SOURCE_DIR}/regression/expect_error.sh)
+set(VP_CHECK_RUN /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_run.py)
+set(VP_CASES ${PROJECT_SOURCE_DIR}/cases)
+
+# Bad input: a clear message naming the option and the valid values, and a non-zero exit.
+function(vp_bad_input name np regex)
+  add_test(NAME bad_input_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" $<TARGET_FILE:vpsolve> ${ARGN})
+  set_tests_properties(bad_input_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+endfunction()
+vp_bad_input(unknown_bc 1 "option -bc_ylo: unknown value 'wal' \\(valid: wall, slip, periodic, velocity\\)" -bc_ylo wal)
+vp_bad_input(one_sided_periodic 1 "option -bc_xhi: periodic must be set on both x faces" -bc_xlo periodic)
+vp_bad_input(negative_density 1 "option -fluid_rho: must be > 0, got -1" -fluid_rho -1)
+vp_bad_input(zero_viscosity 1 "option -fluid_mu: must be > 0, got 0" -fluid_mu 0)
+vp_bad_input(too_many_ranks 3 "option -grid_n: 2,2,2 cells cannot be split over 3 ranks" -grid_n 2,2,2)
+vp_bad_input(missing_options_file 2 "option -options_file: cannot open 'no/such/case.opts'" -options_file no/such/case.opts)
+vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -output_every -1)
+vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)
+vp_bad_input(grid_n_two_values 1 "option -grid_n: needs 3 comma-separated values, got 2" -grid_n 8,8)
+vp_bad_input(cfl_out_of_range 1 "option -time_cfl: must be in \\(0, 1\\], got 2" -time_cfl 2)
+vp_bad_input(unknown_init_flow 1 "option -init_flow: unknown value 'vortex' \\(valid: rest, taylor_green, abc, poiseuille\\)" -init_flow vortex)
+
+# Short runs of the shipped cases: output contract and stored reference values (kinetic energy
+# after 20 steps, written by this code; the physics is checked by the convergence tests).
+function(vp_case_run name np)
+  add_test(NAME case_${name} COMMAND ${VP_CHECK_RUN} --np ${np} --dir ${CMAKE_CURRENT_BINARY_DIR}/case_${name} ${ARGN})
+  set_tests_properties(case_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS ${np})
+endfunction()
+set(VP_SHORT -time_max_steps 20 -output_every 10 -monitor_every 0)
+vp_case_run(taylor_green 2 --expect kinetic_energy=1.862545539:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/taylor_green.opts ${VP_SHORT})
+vp_case_run(channel 2 --expect kinetic_energy=0.004086929146:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/channel.opts ${VP_SHORT})
+# The cavity with each pressure solver, on 3, 2 and 1 ranks: the same flow.
+vp_case_run(cavity_boomeramg 3 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT})
+vp_case_run(cavity_gmg 2 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -pressure_pc_type mg)
+vp_case_run(cavity_pfmg 1 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -pressure_pc_type pfmg)
 
 # --- Particles (DEM) -------------------------------------------------------------------------
 set(VP_DEM_DATA ${CMAKE_CURRENT_SOURCE_DIR}/regression/data)
-set(VP_EXPECT_ERROR ${CMAKE_CURRENT_SOURCE_DIR}/regression/expect_error.sh)
 
 # MPI particle tests on 4 ranks as well (migration, ghosts, rank invariance).
 add_test(NAME mpi_np4_particles
@@ -11,43 +49,28 @@ set_tests_properties(mpi_np4_particles PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PR
 
 # Bad particle input: a clear message and a non-zero exit.
 foreach(bad
-    "overlap|overlap by"
-    "outside|outside the domain"
-    "radius_zero|radius must be > 0"
-    "density_negative|density must be > 0"
-    "missing_column|lacks column\\(s\\) wz"
-    "nan|column y is not a finite number"
+    "overlap|particles 0 and 1 overlap by"
+    "outside|particle 1 at z = 0.0395 lies outside the domain"
+    "radius_zero|particle 0: radius must be > 0"
+    "density_negative|particle 0: density must be > 0"
+    "missing_column|header lacks column\\(s\\) wz"
+    "nan|line 3: column y is not a finite number"
     "duplicate|duplicate particle id 3")
   string(REPLACE "|" ";" parts "${bad}")
   list(GET parts 0 name)
   list(GET parts 1 pattern)
-  add_test(NAME dem_bad_input_${name}
-           COMMAND ${VP_EXPECT_ERROR} "${pattern}"
-                   $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
-                   -particles_file ${VP_DEM_DATA}/${name}.csv -output_dir dem_bad_${name})
-  set_tests_properties(dem_bad_input_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+  vp_bad_input(particles_${name} 1 "option -particles_file: .*${pattern}" -options_file ${VP_DEM_DATA}/box.opts
+               -particles_file ${VP_DEM_DATA}/${name}.csv -output_dir dem_bad_${name})
 endforeach()
-
-add_test(NAME dem_bad_option_restitution
-         COMMAND ${VP_EXPECT_ERROR} "-contact_restitution: must be in \\(0, 1\\]"
-                 $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
-                 -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution 1.5)
-add_test(NAME dem_bad_option_no_stiffness
-         COMMAND ${VP_EXPECT_ERROR} "needs? a contact stiffness"
-                 $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
-                 -particles_file ${VP_DEM_DATA}/good.csv -contact_tc 0)
-add_test(NAME dem_bad_missing_file
-         COMMAND ${VP_EXPECT_ERROR} "cannot open"
-                 $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
-                 -particles_file ${VP_DEM_DATA}/no_such_file.csv)
+vp_bad_input(particles_missing_file 1 "option -particles_file: cannot open" -options_file ${VP_DEM_DATA}/box.opts
+             -particles_file ${VP_DEM_DATA}/no_such_file.csv)
+vp_bad_input(contact_restitution 1 "option -contact_restitution: must be in \\(0, 1\\], got 1.5"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution 1.5)
+vp_bad_input(contact_no_stiffness 1 "option -contact_tc: particles need a contact stiffness"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_tc 0)
 # A subdomain thinner than the particle halo (2 ranks on a 4 mm box, 2 mm spheres).
-add_test(NAME dem_bad_thin_subdomain
-         COMMAND ${VP_EXPECT_ERROR} "thinner than the particle halo"
-                 ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --oversubscribe $<TARGET_FILE:vpsolve>
-                 -options_file ${VP_DEM_DATA}/box.opts -grid_n 2,1,1 -grid_hi 0.004,0.04,0.04
-                 -particle_position 0.002,0.02,0.02 -particle_radius 0.001)
-set_tests_properties(dem_bad_option_restitution dem_bad_option_no_stiffness dem_bad_missing_file
-                     dem_bad_thin_subdomain PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+vp_bad_input(particles_thin_subdomain 2 "thinner than the particle halo" -options_file ${VP_DEM_DATA}/box.opts
+             -grid_n 4,2,2 -grid_hi 0.004,0.04,0.04 -particle_position 0.002,0.02,0.02 -particle_radius 0.001)
 
 # The dry collapse case, shortened, on 2 ranks: it runs and writes the contracted outputs.
 add_test(NAME dem_case_granular_collapse_dry

@@ -51,6 +51,7 @@ struct OutputConfig {
   int every = 0;                           // steps between snapshots (0: none)
   double dt = 0;                           // simulated time between snapshots (0: none)
   int monitorEvery = 10;                   // steps between progress lines (0: none)
+  bool files = true;                       // false: no files at all (library use in tests)
 };
 
 struct Config {

@@ -17,7 +17,7 @@ public:
   MPI_Comm comm() const { return comm_; }
   DM cellDM() const { return cellDM_; }           // dof 1, STAR, width 1 (pressure, Phi)
   DM faceDM() const { return faceDM_; }           // dof 3, BOX, width 1 (velocity on faces)
-  DM faceSolveDM() const { return faceSolveDM_; } // dof 3, STAR, diagonal blocks (velocity matrices)
+  DM faceSolveDM() const { return faceSolveDM_; } // dof 3, STAR, for the velocity matrices
   DM cellVectorDM() const { return cellVectorDM_; } // dof 3, cell-centred vectors for output
 
   int n(int d) const { return n_[d]; }

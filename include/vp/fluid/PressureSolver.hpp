@@ -1,0 +1,41 @@
+#pragma once
+// The pressure Poisson problem -lap_h psi = b, solved as A psi = V b with A = -V lap_h (V the cell
+// volume: the finite-volume form, which multigrid coarsens well), lap_h the cell-centred 7-point operator with
+// zero normal gradient at walls (symmetric positive semi-definite; the constant null space is
+// attached). KSP prefix -pressure_. Defaults: CG + hypre BoomerAMG tuned for the 3-D 7-point
+// Laplacian (see docs/solvers.md); -pressure_pc_type mg (geometric multigrid on the DMDA with
+// rediscretised coarse levels) and -pressure_pc_type pfmg (hypre PFMG) also work. The operator
+// is assembled and the preconditioner set up once; each solve starts from the previous solution.
+#include "vp/grid/Grid.hpp"
+#include <petscksp.h>
+
+namespace vp {
+
+class PressureSolver {
+public:
+  explicit PressureSolver(const Grid& grid);
+  ~PressureSolver();
+  PressureSolver(const PressureSolver&) = delete;
+  PressureSolver& operator=(const PressureSolver&) = delete;
+
+  // Solves -lap_h x = b; b is overwritten (scaled by V, made consistent by removing its mean); x
+  // holds the initial guess. atol: absolute tolerance on -lap_h x - b unless -pressure_ksp_atol is
+  // given (then it applies to the scaled system). Returns iterations.
+  int solve(Vec b, Vec x, double atol);
+  Mat matrix() const;  // A = -V lap_h
+  KSP ksp() const { return ksp_; }
+
+  struct Box {
+    double lo[3], hi[3];  // domain box: the operator of every multigrid level is built from it
+  };
+
+private:
+  const Grid& grid_;
+  KSP ksp_ = nullptr;
+  MatNullSpace nullSpace_ = nullptr;
+  Vec work_ = nullptr;
+  bool userAtol_ = false;
+  Box box_;
+};
+
+} // namespace vp

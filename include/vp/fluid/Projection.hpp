@@ -1,0 +1,55 @@
+#pragma once
+// One fluid step of the incremental scalar projection (PHYSICS.md 1, ARCHITECTURE.md 4):
+//   du = u* - u^n:  (I - nu dt/2 L) du = dt [ -(AB2 N) + nu L u^n - grad p^n / rho + f ]
+//   A psi = -div u*  (A = -lap_h),  u = u* - grad psi,  p^{n+1} = p^n + rho psi / dt
+// AB2 with variable steps (Euler on the first step), Crank-Nicolson diffusion. The pressure is the
+// dynamic pressure: gravity on a constant-density fluid is balanced by its hydrostatic part.
+#include "vp/core/Config.hpp"
+#include "vp/fluid/DiffusionSolver.hpp"
+#include "vp/fluid/Operators.hpp"
+#include "vp/fluid/PressureSolver.hpp"
+
+namespace vp {
+
+struct StepStats {
+  int pressureIterations = 0;
+  int velocityIterations = 0;
+};
+
+class Projection {
+public:
+  Projection(const Grid& grid, const Config& cfg);
+  ~Projection();
+  Projection(const Projection&) = delete;
+  Projection& operator=(const Projection&) = delete;
+
+  // Advances u and p by dt (predictor, diffusion, pressure projection). Call finishStep() after
+  // any further change of u (penalization) to refresh ghosts and statistics.
+  StepStats step(double dt);
+  // Imposes the boundary values on u (fixed wall faces) after it was set from outside, e.g. an
+  // initial condition, then refreshes ghosts and statistics.
+  void applyBoundaryConditions();
+  // Ghost update of the final velocity and its statistics (divergence, energy, CFL rate).
+  const ops::FieldStats& finishStep();
+  const ops::FieldStats& stats() const { return stats_; }
+
+  Vec velocity() const { return u_; }      // faceDM global
+  Vec pressure() const { return p_; }      // cellDM global
+  Vec velocityLocal() const { return uL_; } // faceDM local, ghosts valid after finishStep()
+  const Grid& grid() const { return grid_; }
+  PressureSolver& pressureSolver() { return pressure_; }
+  DiffusionSolver& diffusionSolver() { return diffusion_; }
+
+private:
+  const Grid& grid_;
+  const BoundaryConfig bc_;
+  const double rho_, nu_;
+  const Vec3 force_;
+  DiffusionSolver diffusion_;
+  PressureSolver pressure_;
+  Vec u_, p_, uL_, pL_, N_, Nold_, L_, rhs_, du_, div_, psi_, psiL_;
+  double dtOld_ = 0;
+  ops::FieldStats stats_;
+};
+
+} // namespace vp

@@ -1,0 +1,34 @@
+#pragma once
+// Field snapshots: fields_<step>.h5 (parallel HDF5 through PetscViewerHDF5; datasets velocity
+// (cell-centred, nz x ny x nx x 3) and pressure (nz x ny x nx); root attributes time, step, origin
+// and spacing (x, y, z order)) and fields.xmf, a temporal collection of 3DCoRectMesh grids with
+// relative paths that ParaView opens. See docs/outputs.md.
+#include "vp/grid/Grid.hpp"
+#include <string>
+#include <vector>
+
+namespace vp {
+
+class FieldWriter {
+public:
+  FieldWriter(const Grid& grid, std::string dir);
+  ~FieldWriter();
+  FieldWriter(const FieldWriter&) = delete;
+  FieldWriter& operator=(const FieldWriter&) = delete;
+
+  // velocityLocal: faceDM local vector with ghosts filled; pressure: cellDM global vector.
+  void write(int step, double time, Vec velocityLocal, Vec pressure);
+
+private:
+  void writeXdmf() const;
+
+  const Grid& grid_;
+  std::string dir_;
+  Vec centre_ = nullptr;
+  std::vector<std::pair<int, double>> snapshots_;
+};
+
+// Creates a directory (and parents) on rank 0; throws InputError naming the option if impossible.
+void makeOutputDir(MPI_Comm comm, const std::string& dir);
+
+} // namespace vp

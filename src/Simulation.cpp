@@ -1,0 +1,173 @@
+#include "vp/Simulation.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/core/Logging.hpp"
+#include "vp/fluid/AnalyticFlow.hpp"
+#include "vp/grid/Boundary.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace vp {
+
+namespace {
+
+std::string hms(double seconds)
+{
+  long s = std::lround(std::max(0.0, seconds));
+  char b[32];
+  std::snprintf(b, sizeof b, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return b;
+}
+
+} // namespace
+
+Simulation::Simulation(MPI_Comm comm, const Config& cfg)
+  : cfg_(cfg), grid_(comm, cfg.grid, cfg.bc), particleCfg_(ParticleConfig::fromOptions(comm))
+{
+  wallStart_ = MPI_Wtime();
+  if (cfg_.fluid.off && !particleCfg_.any())
+    throw InputError("option -fluid_off: a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+  if (particleCfg_.any()) dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
+  fluid_ = std::make_unique<Projection>(grid_, cfg_);
+  AnalyticFlow flow(cfg_);
+  sampleVelocity(grid_, flow, 0, fluid_->velocity());
+  samplePressure(grid_, flow, 0, fluid_->pressure());
+  fluid_->applyBoundaryConditions();
+  if (cfg_.output.files) {
+    makeOutputDir(comm, cfg_.output.dir);
+    fields_ = std::make_unique<FieldWriter>(grid_, cfg_.output.dir);
+    std::vector<std::string> columns{"step", "time", "dt", "cfl", "pressure_iterations", "max_divergence",
+                                     "kinetic_energy", "wall_time", "velocity_iterations"};
+    if (dem_) {
+      for (const char* c : {"particle_kinetic_energy", "contacts", "wall_contacts"}) columns.push_back(c);
+      particleWriter_ = std::make_unique<ParticleWriter>(comm, cfg_.output.dir);
+      tracker_ = std::make_unique<ParticleTracker>(comm, cfg_.output.dir, particleCfg_, dem_->particles());
+    }
+    diagnostics_ = std::make_unique<CsvWriter>(comm, cfg_.output.dir + "/diagnostics.csv", columns);
+  }
+}
+
+Simulation::~Simulation() = default;
+
+double Simulation::nextDt() const
+{
+  double dt = cfg_.time.dt;
+  // DEM only: the step is -dem_substeps stable DEM steps.
+  if (dt <= 0 && cfg_.fluid.off) dt = dem_->suggestedStep() * particleCfg_.substeps;
+  if (dt <= 0) {
+    const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
+    dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : hmin * hmin / cfg_.fluid.nu();
+    // Moving walls count too: they set the flow in motion from rest.
+    double rate = fluid_->stats().maxRate;
+    for (int f = 0; f < 6; ++f)
+      for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
+    if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
+  }
+  const double left = cfg_.time.final - time_;
+  // Land on -time_final exactly instead of leaving a sliver of a step.
+  if (dt > left || left - dt < 1e-9 * dt) dt = left;
+  return dt;
+}
+
+void Simulation::advance(double dt)
+{
+  if (!cfg_.fluid.off) {
+    last_ = fluid_->step(dt);
+    fluid_->finishStep();
+  }
+  if (dem_) dem_->advance(time_, dt);
+  time_ += dt;
+  ++step_;
+  pressureIterationsTotal_ += last_.pressureIterations;
+}
+
+void Simulation::run()
+{
+  printSetup();
+  const bool snapshots = cfg_.output.every > 0 || cfg_.output.dt > 0;
+  if (snapshots) output();
+  if (tracker_) tracker_->record(dem_->particles(), time_);
+  const double loopStart = MPI_Wtime();
+  while (time_ < cfg_.time.final * (1 - 1e-12) && step_ < cfg_.time.maxSteps) {
+    const double dt = nextDt();
+    const double t0 = MPI_Wtime();
+    advance(dt);
+    wallLastStep_ = MPI_Wtime() - t0;
+    const auto& s = fluid_->stats();
+    std::vector<double> row{double(step_), time_, dt, dt * s.maxRate, double(last_.pressureIterations), s.maxDivergence,
+                            cfg_.fluid.rho * s.kineticEnergy, MPI_Wtime() - wallStart_, double(last_.velocityIterations)};
+    if (dem_) {
+      const DemDiagnostics d = dem_->diagnostics();
+      row.insert(row.end(), {d.kineticEnergy, double(d.contacts), double(d.wallContacts)});
+      if (tracker_) tracker_->record(dem_->particles(), time_);
+    }
+    if (diagnostics_) diagnostics_->row(row);
+    if (!std::isfinite(s.kineticEnergy))
+      throw std::runtime_error("the flow blew up at step " + std::to_string(step_) + " (non-finite velocity); reduce -time_cfl or -time_dt_max");
+    if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) monitor(dt);
+    const bool due = (cfg_.output.every > 0 && step_ % cfg_.output.every == 0) ||
+                     (cfg_.output.dt > 0 && time_ >= nextOutputTime_ * (1 - 1e-12));
+    if (due) output();
+  }
+  loopWall_ = MPI_Wtime() - loopStart;
+  if (snapshots && lastOutputStep_ != step_) output();
+  if (tracker_) tracker_->flush();
+  printSummary();
+}
+
+void Simulation::output()
+{
+  if (!fields_) return;
+  StageScope stage(Stage::IO);
+  if (!cfg_.fluid.off) fields_->write(step_, time_, fluid_->velocityLocal(), fluid_->pressure());
+  if (particleWriter_) particleWriter_->write(dem_->particles(), step_, time_);
+  lastOutputStep_ = step_;
+  if (cfg_.output.dt > 0)
+    while (nextOutputTime_ <= time_ * (1 + 1e-12)) nextOutputTime_ += cfg_.output.dt;
+}
+
+void Simulation::monitor(double dt) const
+{
+  const auto& s = fluid_->stats();
+  const double elapsed = MPI_Wtime() - wallStart_;
+  const double perStep = elapsed / std::max(step_, 1);
+  const double byTime = time_ > 0 ? elapsed / time_ * (cfg_.time.final - time_) : 0;
+  const double bySteps = perStep * (cfg_.time.maxSteps - step_);
+  PetscPrintf(grid_.comm(), "step %6d  t %.4e  dt %.3e  cfl %.3f  p_its %3d  v_its %3d  max|div u| %.2e  %.3f s/step  ETA %s\n",
+              step_, time_, dt, dt * s.maxRate, last_.pressureIterations, last_.velocityIterations, s.maxDivergence,
+              wallLastStep_, hms(std::min(byTime, bySteps)).c_str());
+}
+
+void Simulation::printSetup() const
+{
+  int size;
+  MPI_Comm_size(grid_.comm(), &size);
+  PetscInt m, n, p;
+  VP_CALL(DMDAGetInfo(grid_.cellDM(), nullptr, nullptr, nullptr, nullptr, &m, &n, &p, nullptr, nullptr, nullptr,
+                      nullptr, nullptr, nullptr));
+  PetscPrintf(grid_.comm(), "vpsolve: grid %d x %d x %d cells (%ld), h = %.4g, %.4g, %.4g m, %d ranks as %d x %d x %d\n",
+              grid_.n(0), grid_.n(1), grid_.n(2), grid_.cells(), grid_.h(0), grid_.h(1), grid_.h(2), size, int(m),
+              int(n), int(p));
+  PetscPrintf(grid_.comm(), "vpsolve: boundaries x %s/%s  y %s/%s  z %s/%s; rho %g kg/m^3, mu %g Pa s; until t = %g s or %d steps\n",
+              bcName(cfg_.bc.type[0]), bcName(cfg_.bc.type[1]), bcName(cfg_.bc.type[2]), bcName(cfg_.bc.type[3]),
+              bcName(cfg_.bc.type[4]), bcName(cfg_.bc.type[5]), cfg_.fluid.rho, cfg_.fluid.mu, cfg_.time.final,
+              cfg_.time.maxSteps);
+}
+
+void Simulation::printSummary() const
+{
+  const double wall = MPI_Wtime() - wallStart_;
+  PetscPrintf(grid_.comm(), "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
+              "mean pressure iterations %.1f; kinetic energy %.6e J\n",
+              step_, time_, wall, wall / std::max(step_, 1), wall / std::max(step_, 1) / grid_.cells() * 1e6,
+              double(pressureIterationsTotal_) / std::max(step_, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
+  if (dem_) {
+    const DemDiagnostics d = dem_->diagnostics();
+    const double particleSteps = double(d.particles) * step_ * particleCfg_.substeps;
+    PetscPrintf(grid_.comm(), "vpsolve: DEM %ld particles, %d x %d sub-steps, loop time %.3f s, %.4g particle-steps/s, "
+                "%zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
+                d.particles, step_, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
+                d.kineticEnergy);
+  }
+}
+
+} // namespace vp

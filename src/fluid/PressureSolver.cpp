@@ -1,0 +1,176 @@
+#include "vp/fluid/PressureSolver.hpp"
+#include "vp/core/Error.hpp"
+#include <string>
+
+namespace vp {
+
+namespace {
+
+// Sets an option default unless the user gave the option.
+void setDefault(const char* name, const char* value)
+{
+  PetscBool has;
+  VP_CALL(PetscOptionsHasName(nullptr, nullptr, name, &has));
+  if (!has) VP_CALL(PetscOptionsSetValue(nullptr, name, value));
+}
+
+// Assembles -lap_h on whatever level DM the KSP hands over (PCMG calls it on every coarse level).
+PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
+{
+  auto* box = static_cast<PressureSolver::Box*>(ctx);
+  DM da;
+  PetscInt M[3], xs[3], xm[3];
+  DMBoundaryType bt[3];
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetDM(ksp, &da));
+  PetscCall(DMDAGetInfo(da, nullptr, &M[0], &M[1], &M[2], nullptr, nullptr, nullptr, nullptr, nullptr,
+                        &bt[0], &bt[1], &bt[2], nullptr));
+  PetscCall(DMDAGetCorners(da, &xs[0], &xs[1], &xs[2], &xm[0], &xm[1], &xm[2]));
+  // Scaled by the cell volume (a finite-volume flux balance): with piecewise-constant transfers
+  // the rediscretised coarse operators are then within a factor 2 of the Galerkin ones.
+  double h[3], w[3];
+  for (int d = 0; d < 3; ++d) h[d] = (box->hi[d] - box->lo[d]) / M[d];
+  for (int d = 0; d < 3; ++d) w[d] = h[0] * h[1] * h[2] / (h[d] * h[d]);
+  for (PetscInt k = xs[2]; k < xs[2] + xm[2]; ++k)
+    for (PetscInt j = xs[1]; j < xs[1] + xm[1]; ++j)
+      for (PetscInt i = xs[0]; i < xs[0] + xm[0]; ++i) {
+        MatStencil row = {k, j, i, 0}, col[7];
+        PetscScalar v[7];
+        int n = 0;
+        double diag = 0;
+        for (int d = 0; d < 3; ++d)
+          for (int s = -1; s <= 1; s += 2) {
+            PetscInt q[3] = {i, j, k};
+            q[d] += s;
+            // Neighbours across a wall do not exist: zero flux (Neumann).
+            if (bt[d] != DM_BOUNDARY_PERIODIC && (q[d] < 0 || q[d] >= M[d])) continue;
+            if (M[d] == 1) continue;  // a periodic axis one cell thick has no gradient
+            col[n] = {q[2], q[1], q[0], 0};
+            v[n++] = -w[d];
+            diag += w[d];
+          }
+        col[n] = row;
+        v[n++] = diag;
+        PetscCall(MatSetValuesStencil(B, 1, &row, n, col, v, ADD_VALUES));
+      }
+  PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+  MatNullSpace ns;
+  PetscCall(MatNullSpaceCreate(PetscObjectComm((PetscObject)B), PETSC_TRUE, 0, nullptr, &ns));
+  PetscCall(MatSetNullSpace(B, ns));
+  if (A != B) PetscCall(MatSetNullSpace(A, ns));
+  PetscCall(MatNullSpaceDestroy(&ns));
+  PetscFunctionReturn(0);
+}
+
+// Number of multigrid levels: halve while every axis stays even with at least 2 cells per rank.
+int mgLevels(const Grid& g)
+{
+  PetscInt procs[3];
+  VP_CALL(DMDAGetInfo(g.cellDM(), nullptr, nullptr, nullptr, nullptr, &procs[0], &procs[1], &procs[2], nullptr,
+                      nullptr, nullptr, nullptr, nullptr, nullptr));
+  int levels = 1;
+  PetscInt n[3] = {g.n(0), g.n(1), g.n(2)};
+  for (;;) {
+    bool ok = true;
+    for (int d = 0; d < 3; ++d) ok = ok && n[d] % 2 == 0 && n[d] / 2 >= 2 * procs[d];
+    if (!ok) break;
+    for (int d = 0; d < 3; ++d) n[d] /= 2;
+    ++levels;
+  }
+  return levels;
+}
+
+} // namespace
+
+PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
+{
+  char pc[64] = "hypre";
+  PetscBool set;
+  VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-pc_type", pc, sizeof pc, &set));
+  std::string pcType = pc;
+  setDefault("-pressure_ksp_type", "cg");
+  setDefault("-pressure_ksp_norm_type", "unpreconditioned");
+  setDefault("-pressure_ksp_rtol", "1e-10");  // max |div u| dx/|u| <= 1e-10 even after impulsive starts
+  if (pcType == "hypre") {
+    setDefault("-pressure_pc_type", "hypre");
+    setDefault("-pressure_pc_hypre_type", "boomeramg");
+    char hypre[64] = "boomeramg";
+    VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-pc_hypre_type", hypre, sizeof hypre, &set));
+    if (std::string(hypre) == "boomeramg") {
+      // Tuned for the 3-D 7-point Laplacian (benchmarks/poisson): cheap HMIS coarsening with
+      // aggressive coarsening on the first level and long-range interpolation.
+      setDefault("-pressure_pc_hypre_boomeramg_coarsen_type", "HMIS");
+      setDefault("-pressure_pc_hypre_boomeramg_interp_type", "ext+i");
+      setDefault("-pressure_pc_hypre_boomeramg_P_max", "4");
+      setDefault("-pressure_pc_hypre_boomeramg_strong_threshold", "0.5");
+      setDefault("-pressure_pc_hypre_boomeramg_agg_nl", "1");
+      setDefault("-pressure_pc_hypre_boomeramg_agg_num_paths", "2");
+    }
+  } else if (pcType == "mg") {
+    // Q0 transfer with rediscretised coarse operators; Galerkin with Q0 degrades convergence.
+    VP_CALL(DMDASetInterpolationType(grid.cellDM(), DMDA_Q0));
+    setDefault("-pressure_pc_mg_levels", std::to_string(mgLevels(grid)).c_str());
+    setDefault("-pressure_mg_coarse_pc_type", "redundant");
+    setDefault("-pressure_mg_coarse_redundant_pc_type", "svd");  // the coarse operator is singular
+  } else if (pcType == "pfmg") {
+    VP_CALL(DMSetMatType(grid.cellDM(), MATHYPRESTRUCT));
+  }
+  VP_CALL(PetscOptionsHasName(nullptr, "pressure_", "-ksp_atol", &set));
+  userAtol_ = set;
+
+  VP_CALL(KSPCreate(grid.comm(), &ksp_));
+  VP_CALL(KSPSetOptionsPrefix(ksp_, "pressure_"));
+  VP_CALL(KSPSetDM(ksp_, grid.cellDM()));
+  for (int d = 0; d < 3; ++d) {
+    box_.lo[d] = grid.lo(d);
+    box_.hi[d] = grid.hi(d);
+  }
+  VP_CALL(KSPSetComputeOperators(ksp_, computeOperator, &box_));
+  VP_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
+  VP_CALL(KSPSetFromOptions(ksp_));
+  VP_CALL(KSPSetUp(ksp_));
+  VP_CALL(MatNullSpaceCreate(grid.comm(), PETSC_TRUE, 0, nullptr, &nullSpace_));
+  VP_CALL(DMCreateGlobalVector(grid.cellDM(), &work_));
+}
+
+PressureSolver::~PressureSolver()
+{
+  VecDestroy(&work_);
+  MatNullSpaceDestroy(&nullSpace_);
+  KSPDestroy(&ksp_);
+}
+
+Mat PressureSolver::matrix() const
+{
+  Mat A;
+  VP_CALL(KSPGetOperators(ksp_, &A, nullptr));
+  return A;
+}
+
+int PressureSolver::solve(Vec b, Vec x, double atol)
+{
+  const double volume = grid_.cellVolume();
+  VP_CALL(VecScale(b, volume));
+  VP_CALL(MatNullSpaceRemove(nullSpace_, b));
+  // The previous solution is a good start for smooth flows, a bad one after an impulsive change
+  // (e.g. a lid set in motion): keep it only if it beats zero.
+  PetscReal bnorm, r0;
+  VP_CALL(MatMult(matrix(), x, work_));
+  VP_CALL(VecAYPX(work_, -1.0, b));
+  VP_CALL(VecNorm(work_, NORM_2, &r0));
+  VP_CALL(VecNorm(b, NORM_2, &bnorm));
+  if (r0 > bnorm) VP_CALL(VecSet(x, 0));
+  if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol * volume, PETSC_DEFAULT, PETSC_DEFAULT));
+  VP_CALL(KSPSolve(ksp_, b, x));
+  KSPConvergedReason reason;
+  VP_CALL(KSPGetConvergedReason(ksp_, &reason));
+  if (reason < 0)
+    throw std::runtime_error(std::string("pressure solve did not converge: ") + KSPConvergedReasons[reason] +
+                             " (see -pressure_ksp_monitor, -pressure_ksp_max_it)");
+  PetscInt its;
+  VP_CALL(KSPGetIterationNumber(ksp_, &its));
+  return static_cast<int>(its);
+}
+
+} // namespace vp

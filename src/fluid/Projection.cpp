@@ -1,0 +1,147 @@
+#include "vp/fluid/Projection.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/core/Logging.hpp"
+#include "vp/grid/Boundary.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace vp {
+
+namespace {
+
+// Scoped DMDA array access.
+struct FaceArray {
+  FaceArray(DM dm, Vec v, bool read = false) : dm(dm), v(v), read(read)
+  {
+    if (read) VP_CALL(DMDAVecGetArrayDOFRead(dm, v, &a));
+    else VP_CALL(DMDAVecGetArrayDOF(dm, v, &a));
+  }
+  ~FaceArray()
+  {
+    if (read) DMDAVecRestoreArrayDOFRead(dm, v, &a);
+    else DMDAVecRestoreArrayDOF(dm, v, &a);
+  }
+  DM dm;
+  Vec v;
+  bool read;
+  PetscScalar**** a;
+};
+
+struct CellArray {
+  CellArray(DM dm, Vec v) : dm(dm), v(v) { VP_CALL(DMDAVecGetArray(dm, v, &a)); }
+  ~CellArray() { DMDAVecRestoreArray(dm, v, &a); }
+  DM dm;
+  Vec v;
+  PetscScalar*** a;
+};
+
+double norm2(Vec v)
+{
+  PetscReal n;
+  VP_CALL(VecNorm(v, NORM_2, &n));
+  return n;
+}
+
+} // namespace
+
+Projection::Projection(const Grid& grid, const Config& cfg)
+  : grid_(grid), bc_(cfg.bc), rho_(cfg.fluid.rho), nu_(cfg.fluid.nu()), force_(cfg.fluid.bodyForce),
+    diffusion_(grid, cfg.bc), pressure_(grid)
+{
+  DM f = grid.faceDM(), c = grid.cellDM();
+  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_}) VP_CALL(DMCreateGlobalVector(f, v));
+  for (Vec* v : {&p_, &div_, &psi_}) VP_CALL(DMCreateGlobalVector(c, v));
+  VP_CALL(DMCreateLocalVector(f, &uL_));
+  VP_CALL(DMCreateLocalVector(c, &pL_));
+  VP_CALL(DMCreateLocalVector(c, &psiL_));
+  for (Vec v : {u_, N_, Nold_, L_, rhs_, du_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
+}
+
+Projection::~Projection()
+{
+  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
+}
+
+StepStats Projection::step(double dt)
+{
+  const Grid& g = grid_;
+  StepStats st;
+  double uNorm = norm2(u_);
+  {
+    StageScope stage(Stage::Advection);
+    // Ghosts of u^n are valid from finishStep() of the previous step (or of the initial state).
+    FaceArray u(g.faceDM(), uL_), N(g.faceDM(), N_), L(g.faceDM(), L_);
+    ops::advectionAndLaplacian(g, u.a, N.a, L.a);
+    VP_CALL(DMGlobalToLocal(g.cellDM(), p_, INSERT_VALUES, pL_));
+    CellArray p(g.cellDM(), pL_);
+    fillCellGhosts(g, p.a);
+    // rhs = dt [ -(c1 N^n - c0 N^{n-1}) + nu L u^n + f ] - dt/rho grad p^n, zero on fixed faces.
+    const double c0 = dtOld_ > 0 ? 0.5 * dt / dtOld_ : 0, c1 = 1 + c0;
+    FaceArray r(g.faceDM(), rhs_), Nold(g.faceDM(), Nold_);
+    for (PetscInt k = g.start(2); k < g.end(2); ++k)
+      for (PetscInt j = g.start(1); j < g.end(1); ++j)
+        for (PetscInt i = g.start(0); i < g.end(0); ++i) {
+          const PetscInt q[3] = {i, j, k};
+          for (int c = 0; c < 3; ++c)
+            r.a[k][j][i][c] = isFixedFace(g, c, q[c]) ? 0
+                              : dt * (-(c1 * N.a[k][j][i][c] - c0 * Nold.a[k][j][i][c]) + nu_ * L.a[k][j][i][c] + force_[c]);
+        }
+    ops::addGradient(g, p.a, -dt / rho_, r.a);
+  }
+  {
+    StageScope stage(Stage::Diffusion);
+    st.velocityIterations = diffusion_.solve(0.5 * nu_ * dt, rhs_, du_, 1e-14 * std::max(uNorm, norm2(rhs_)));
+    VP_CALL(VecAXPY(u_, 1.0, du_));  // u*
+  }
+  {
+    StageScope stage(Stage::Pressure);
+    VP_CALL(DMGlobalToLocal(g.faceDM(), u_, INSERT_VALUES, uL_));
+    {
+      FaceArray u(g.faceDM(), uL_);
+      fillFaceGhosts(g, bc_, u.a);
+      CellArray div(g.cellDM(), div_);
+      ops::divergence(g, u.a, div.a);
+    }
+    VP_CALL(VecScale(div_, -1.0));
+    double hmin = std::min({g.h(0), g.h(1), g.h(2)});
+    st.pressureIterations = pressure_.solve(div_, psi_, 1e-13 * norm2(u_) / hmin);
+    VP_CALL(DMGlobalToLocal(g.cellDM(), psi_, INSERT_VALUES, psiL_));
+    CellArray psi(g.cellDM(), psiL_);
+    fillCellGhosts(g, psi.a);
+    FaceArray u(g.faceDM(), u_);
+    ops::addGradient(g, psi.a, -1.0, u.a);
+    VP_CALL(VecAXPY(p_, rho_ / dt, psi_));
+  }
+  std::swap(N_, Nold_);
+  dtOld_ = dt;
+  return st;
+}
+
+void Projection::applyBoundaryConditions()
+{
+  const Grid& g = grid_;
+  {
+    FaceArray u(g.faceDM(), u_);
+    for (int c = 0; c < 3; ++c) {
+      if (!g.atLow(c)) continue;
+      const double w = wallVelocity(bc_, 2 * c)[c];
+      PetscInt lo[3] = {g.start(0), g.start(1), g.start(2)}, hi[3] = {g.end(0), g.end(1), g.end(2)};
+      hi[c] = 1;  // the fixed face 0
+      for (PetscInt k = lo[2]; k < hi[2]; ++k)
+        for (PetscInt j = lo[1]; j < hi[1]; ++j)
+          for (PetscInt i = lo[0]; i < hi[0]; ++i) u.a[k][j][i][c] = w;
+    }
+  }
+  finishStep();
+}
+
+const ops::FieldStats& Projection::finishStep()
+{
+  VP_CALL(DMGlobalToLocal(grid_.faceDM(), u_, INSERT_VALUES, uL_));
+  FaceArray u(grid_.faceDM(), uL_);
+  fillFaceGhosts(grid_, bc_, u.a);
+  stats_ = ops::stats(grid_, u.a);
+  return stats_;
+}
+
+} // namespace vp

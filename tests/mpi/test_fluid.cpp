@@ -1,0 +1,318 @@
+// Fluid core: discrete operators, projection, convergence to exact solutions, rank invariance.
+#include "vp/Simulation.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/fluid/AnalyticFlow.hpp"
+#include "vp/grid/Boundary.hpp"
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+using namespace vp;
+
+namespace {
+
+Config periodicBox(int nx, int ny, int nz, double lz)
+{
+  Config c;
+  c.grid.n = {nx, ny, nz};
+  c.grid.hi = {2 * M_PI, 2 * M_PI, lz};
+  for (auto& t : c.bc.type) t = BcType::Periodic;
+  c.fluid.rho = 1;
+  c.fluid.mu = 0.05;
+  c.output.files = false;
+  c.output.monitorEvery = 0;
+  return c;
+}
+
+// Max over owned free faces of |u - exact| (collective).
+double maxError(Simulation& sim, const AnalyticFlow& flow)
+{
+  const Grid& g = sim.grid();
+  Vec exact;
+  VP_CALL(VecDuplicate(sim.fluid().velocity(), &exact));
+  sampleVelocity(g, flow, sim.time(), exact);
+  VP_CALL(VecAXPY(exact, -1.0, sim.fluid().velocity()));
+  PetscReal e;
+  VP_CALL(VecNorm(exact, NORM_INFINITY, &e));
+  VecDestroy(&exact);
+  return e;
+}
+
+// Solver options for tests that compare to round-off; removed again on destruction.
+struct TightSolvers {
+  TightSolvers()
+  {
+    PetscOptionsSetValue(nullptr, "-pressure_ksp_rtol", "1e-13");
+    PetscOptionsSetValue(nullptr, "-velocity_ksp_rtol", "1e-13");
+  }
+  ~TightSolvers()
+  {
+    PetscOptionsClearValue(nullptr, "-pressure_ksp_rtol");
+    PetscOptionsClearValue(nullptr, "-velocity_ksp_rtol");
+  }
+};
+
+bool allRanks(MPI_Comm comm, bool ok)
+{
+  int in = ok ? 1 : 0, out;
+  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
+  return out == 1;
+}
+
+Config mixedBox()
+{
+  Config c;
+  c.grid.n = {9, 7, 6};
+  c.grid.hi = {1.0, 0.7, 0.9};
+  c.bc.type = {BcType::Wall, BcType::Velocity, BcType::Periodic, BcType::Periodic, BcType::Slip, BcType::Wall};
+  c.bc.velocity[1] = {0, 0.3, -0.2};
+  c.output.files = false;
+  c.output.monitorEvery = 0;
+  return c;
+}
+
+} // namespace
+
+TEST_CASE("div of grad equals minus the assembled Poisson matrix", "[mpi][operators]")
+{
+  Config c = mixedBox();
+  Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
+  PressureSolver ps(g);
+  Vec phi, phiL, grad, gradL, div, Aphi;
+  VP_CALL(DMCreateGlobalVector(g.cellDM(), &phi));
+  VP_CALL(VecSetRandom(phi, nullptr));
+  VP_CALL(DMCreateLocalVector(g.cellDM(), &phiL));
+  VP_CALL(DMGlobalToLocal(g.cellDM(), phi, INSERT_VALUES, phiL));
+  VP_CALL(DMCreateGlobalVector(g.faceDM(), &grad));
+  VP_CALL(VecSet(grad, 0));
+  PetscScalar ***p, ****gr, ***dv;
+  VP_CALL(DMDAVecGetArray(g.cellDM(), phiL, &p));
+  fillCellGhosts(g, p);
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), grad, &gr));
+  ops::addGradient(g, p, 1.0, gr);
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), grad, &gr));
+  VP_CALL(DMDAVecRestoreArray(g.cellDM(), phiL, &p));
+  // The gradient of a pressure never changes a wall's normal velocity: homogeneous ghosts.
+  VP_CALL(DMCreateLocalVector(g.faceDM(), &gradL));
+  VP_CALL(DMGlobalToLocal(g.faceDM(), grad, INSERT_VALUES, gradL));
+  BoundaryConfig zero = c.bc;
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), gradL, &gr));
+  fillFaceGhosts(g, zero, gr, true);
+  VP_CALL(DMCreateGlobalVector(g.cellDM(), &div));
+  VP_CALL(DMDAVecGetArray(g.cellDM(), div, &dv));
+  ops::divergence(g, gr, dv);
+  VP_CALL(DMDAVecRestoreArray(g.cellDM(), div, &dv));
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), gradL, &gr));
+  VP_CALL(VecDuplicate(phi, &Aphi));
+  VP_CALL(MatMult(ps.matrix(), phi, Aphi));
+  VP_CALL(VecAXPY(Aphi, g.cellVolume(), div));  // A phi + V div grad phi
+  PetscReal diff, scale;
+  VP_CALL(VecNorm(Aphi, NORM_INFINITY, &diff));
+  VP_CALL(VecNorm(div, NORM_INFINITY, &scale));
+  REQUIRE(scale > 1);
+  CHECK(diff <= 1e-13 * scale * g.cellVolume());
+  for (Vec* v : {&phi, &phiL, &grad, &gradL, &div, &Aphi}) VecDestroy(v);
+}
+
+TEST_CASE("the viscous matrix equals the face Laplacian with its wall ghost rules", "[mpi][operators]")
+{
+  Config c = mixedBox();
+  c.bc.type[4] = BcType::Wall;  // no-slip at z low as well: edges next to two walls
+  Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
+  DiffusionSolver ds(g, c.bc);
+  Vec u, uL, N, L, SLu;
+  VP_CALL(DMCreateGlobalVector(g.faceDM(), &u));
+  VP_CALL(VecSetRandom(u, nullptr));
+  {
+    // Fixed wall faces hold zero (homogeneous problem).
+    PetscScalar**** a;
+    VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), u, &a));
+    for (PetscInt k = g.start(2); k < g.end(2); ++k)
+      for (PetscInt j = g.start(1); j < g.end(1); ++j)
+        for (PetscInt i = g.start(0); i < g.end(0); ++i) {
+          const PetscInt q[3] = {i, j, k};
+          for (int d = 0; d < 3; ++d)
+            if (isFixedFace(g, d, q[d])) a[k][j][i][d] = 0;
+        }
+    VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), u, &a));
+  }
+  VP_CALL(DMCreateLocalVector(g.faceDM(), &uL));
+  VP_CALL(DMGlobalToLocal(g.faceDM(), u, INSERT_VALUES, uL));
+  for (Vec* v : {&N, &L, &SLu}) {
+    VP_CALL(VecDuplicate(u, v));
+    VP_CALL(VecSet(*v, 0));
+  }
+  PetscScalar ****a, ****n, ****l;
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), uL, &a));
+  fillFaceGhosts(g, c.bc, a, true);
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), N, &n));
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), L, &l));
+  ops::advectionAndLaplacian(g, a, n, l);
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), L, &l));
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), N, &n));
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), uL, &a));
+  VP_CALL(MatMult(ds.scaledLaplacian(), u, SLu));
+  VP_CALL(VecPointwiseDivide(SLu, SLu, ds.weights()));
+  VP_CALL(VecAXPY(SLu, -1.0, L));
+  PetscReal diff, scale;
+  VP_CALL(VecNorm(SLu, NORM_INFINITY, &diff));
+  VP_CALL(VecNorm(L, NORM_INFINITY, &scale));
+  CHECK(diff <= 1e-12 * scale);
+  // S L is symmetric, which is what lets CG solve the Crank-Nicolson system.
+  PetscBool symmetric;
+  VP_CALL(MatIsSymmetric(ds.scaledLaplacian(), 1e-12, &symmetric));
+  CHECK(symmetric);
+  for (Vec* v : {&u, &uL, &N, &L, &SLu}) VecDestroy(v);
+}
+
+TEST_CASE("every projection leaves max |div u| below 1e-10 |u|/dx", "[mpi][projection]")
+{
+  // A 3-D cavity: moving lid, walls, slip: every boundary kind at once.
+  Config c = mixedBox();
+  c.bc.type = {BcType::Wall, BcType::Wall, BcType::Slip, BcType::Velocity, BcType::Wall, BcType::Wall};
+  c.bc.velocity = {};
+  c.bc.velocity[3] = {1.0, 0, 0.5};
+  c.fluid.mu = 0.01;
+  c.time.maxSteps = 15;
+  Simulation sim(PETSC_COMM_WORLD, c);
+  double worst = 0;
+  for (int s = 0; s < 15; ++s) {
+    sim.advance(sim.nextDt());
+    const auto& st = sim.fluid().stats();
+    const double hmin = std::min({c.grid.hi[0] / 9, 0.7 / 7, 0.9 / 6});
+    const double umax = st.maxRate * hmin;  // a lower bound of max|u|: conservative
+    worst = std::max(worst, st.maxDivergence * hmin / umax);
+  }
+  INFO("worst relative divergence " << worst);
+  CHECK(worst <= 1e-10);
+  CHECK(sim.fluid().stats().kineticEnergy > 0);
+}
+
+TEST_CASE("Taylor-Green 2-D: second order in space and time, energy decays at 4 nu", "[mpi][convergence]")
+{
+  TightSolvers tight;
+  std::vector<double> err;
+  double rate64 = 0;
+  for (int n : {16, 32, 64}) {
+    Config c = periodicBox(n, n, 2, 2 * M_PI / n * 2);
+    c.fluid.init = InitFlow::TaylorGreen;
+    c.time.final = 1.0;
+    Simulation sim(PETSC_COMM_WORLD, c);
+    const double ke0 = sim.fluid().stats().kineticEnergy;
+    while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
+    err.push_back(maxError(sim, AnalyticFlow(c)));
+    if (n == 64) rate64 = std::log(ke0 / sim.fluid().stats().kineticEnergy) / sim.time();
+  }
+  const double order1 = std::log2(err[0] / err[1]), order2 = std::log2(err[1] / err[2]);
+  INFO("max errors " << err[0] << " " << err[1] << " " << err[2] << ", orders " << order1 << " " << order2);
+  CHECK(order1 >= 1.9);
+  CHECK(order2 >= 1.9);
+  const double expected = 4 * 0.05;  // 4 nu
+  INFO("energy decay rate " << rate64 << " vs 4 nu = " << expected);
+  CHECK(std::fabs(rate64 / expected - 1) <= 0.01);
+}
+
+TEST_CASE("ABC flow 3-D: second order in all three components", "[mpi][convergence]")
+{
+  TightSolvers tight;
+  std::vector<double> err;
+  for (int n : {16, 32, 64}) {
+    Config c = periodicBox(n, n, n, 2 * M_PI);
+    c.fluid.init = InitFlow::Abc;
+    c.time.final = 0.25;
+    Simulation sim(PETSC_COMM_WORLD, c);
+    while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
+    err.push_back(maxError(sim, AnalyticFlow(c)));
+  }
+  const double order1 = std::log2(err[0] / err[1]), order2 = std::log2(err[1] / err[2]);
+  INFO("max errors " << err[0] << " " << err[1] << " " << err[2] << ", orders " << order1 << " " << order2);
+  CHECK(order1 >= 1.9);
+  CHECK(order2 >= 1.9);
+}
+
+TEST_CASE("plane Poiseuille flow from rest reaches the exact parabola", "[mpi][channel]")
+{
+  TightSolvers tight;
+  Config c;
+  c.grid.n = {4, 16, 3};
+  c.grid.hi = {0.5, 1.0, 0.4};
+  c.bc.type = {BcType::Periodic, BcType::Periodic, BcType::Wall, BcType::Wall, BcType::Periodic, BcType::Periodic};
+  c.fluid.rho = 1;
+  c.fluid.mu = 1;
+  c.fluid.bodyForce = {1, 0, 0};
+  c.time.dt = 0.01;
+  c.time.final = 3.0;
+  c.output.files = false;
+  c.output.monitorEvery = 0;
+  Simulation sim(PETSC_COMM_WORLD, c);
+  while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
+  Config exact = c;
+  exact.fluid.init = InitFlow::Poiseuille;
+  const double umax = 1.0 / (2 * 1.0) * 0.25;  // f/(2 nu) (H/2)^2
+  const double rel = maxError(sim, AnalyticFlow(exact)) / umax;
+  INFO("max relative deviation from the parabola " << rel);
+  CHECK(rel <= 1e-8);
+}
+
+TEST_CASE("the same run on 1, 2 and 3 ranks gives the same fields", "[mpi][invariance]")
+{
+  TightSolvers tight;
+  int size, rank;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  Config c = mixedBox();
+  c.grid.n = {12, 10, 9};
+  c.bc.type = {BcType::Wall, BcType::Wall, BcType::Periodic, BcType::Periodic, BcType::Wall, BcType::Velocity};
+  c.bc.velocity = {};
+  c.bc.velocity[5] = {1, 0.5, 0};
+  c.fluid.mu = 0.02;
+  c.fluid.bodyForce = {0, 0.3, 0};
+  // Fields in natural ordering on world rank 0, for every communicator size up to the world's.
+  std::vector<std::vector<double>> fields;
+  for (int s = 1; s <= size; ++s) {
+    MPI_Comm sub;
+    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
+    if (sub != MPI_COMM_NULL) {
+      Simulation sim(sub, c);
+      for (int k = 0; k < 8; ++k) sim.advance(sim.nextDt());
+      std::vector<double> all;
+      for (auto [dm, v] : {std::pair{sim.grid().faceDM(), sim.fluid().velocity()},
+                           std::pair{sim.grid().cellDM(), sim.fluid().pressure()}}) {
+        Vec natural, seq;
+        VecScatter toZero;
+        VP_CALL(DMDACreateNaturalVector(dm, &natural));
+        VP_CALL(DMDAGlobalToNaturalBegin(dm, v, INSERT_VALUES, natural));
+        VP_CALL(DMDAGlobalToNaturalEnd(dm, v, INSERT_VALUES, natural));
+        VP_CALL(VecScatterCreateToZero(natural, &toZero, &seq));
+        VP_CALL(VecScatterBegin(toZero, natural, seq, INSERT_VALUES, SCATTER_FORWARD));
+        VP_CALL(VecScatterEnd(toZero, natural, seq, INSERT_VALUES, SCATTER_FORWARD));
+        if (rank == 0) {
+          const PetscScalar* a;
+          PetscInt n;
+          VP_CALL(VecGetLocalSize(seq, &n));
+          VP_CALL(VecGetArrayRead(seq, &a));
+          all.insert(all.end(), a, a + n);
+          VP_CALL(VecRestoreArrayRead(seq, &a));
+        }
+        VecScatterDestroy(&toZero);
+        VecDestroy(&seq);
+        VecDestroy(&natural);
+      }
+      if (rank == 0) fields.push_back(all);
+      MPI_Comm_free(&sub);
+    }
+  }
+  bool ok = true;
+  if (rank == 0) {
+    double scale = 0;
+    for (double v : fields[0]) scale = std::max(scale, std::fabs(v));
+    for (size_t s = 1; s < fields.size(); ++s) {
+      double diff = 0;
+      for (size_t i = 0; i < fields[0].size(); ++i) diff = std::max(diff, std::fabs(fields[s][i] - fields[0][i]));
+      INFO("ranks " << s + 1 << " vs 1: max difference " << diff << " of " << scale);
+      ok = ok && diff <= 1e-8 * scale;
+      CHECK(diff <= 1e-8 * scale);
+    }
+  }
+  REQUIRE(allRanks(PETSC_COMM_WORLD, ok));
+}

@@ -1,0 +1,151 @@
+// Harada point-particle model: its pieces (drag, image-series added mass, Basset quadrature,
+// contact) and the seed falling sphere.
+#include "vp/interactions/BassetHistory.hpp"
+#include "vp/interactions/Harada.hpp"
+#include "vp/interactions/SchillerNaumann.hpp"
+#include "vp/interactions/WallAddedMass.hpp"
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+using namespace vp;
+
+namespace {
+
+HaradaParams dragOnly()
+{
+  HaradaParams p;
+  p.lubrication = p.addedMass = p.history = p.contact = false;
+  return p;
+}
+
+// Error of the quadrature of int_0^1 u'(s)/sqrt(1-s) ds for u = s^2 (exact 8/3) with n steps.
+double bassetError(int n)
+{
+  const double dt = 1.0 / n;
+  BassetHistory b(dt, 0);
+  for (int k = 1; k <= n; ++k) b.push(std::pow(k * dt, 2));
+  return std::fabs(b.integral() - 8.0 / 3.0);
+}
+
+} // namespace
+
+TEST_CASE("Schiller-Naumann drag coefficient", "[harada]")
+{
+  CHECK(schillerNaumannDragCoefficient(1) == Approx(24 * 1.15).epsilon(1e-14));
+  CHECK(schillerNaumannDragCoefficient(100) == Approx(0.24 * (1 + 0.15 * std::pow(100, 0.687))).epsilon(1e-14));
+}
+
+TEST_CASE("Harada: drag and buoyant weight only give the seed terminal velocity 0.1462 m/s", "[harada]")
+{
+  HaradaParams p = dragOnly();
+  p.dt = 1e-3;
+  HaradaModel m(p, 100, 0); // far from the wall; lubrication and contact are off anyway
+  while (m.time() < 3) m.step();
+  const double terminal = -m.velocity();
+  INFO("terminal velocity " << terminal);
+  CHECK(terminal == Approx(0.1462).epsilon(5e-3));
+  // The terminal state balances the weight exactly (independent of the step size).
+  CHECK(m.forces().drag + m.forces().weight == Approx(0).margin(1e-12 * m.forces().drag));
+}
+
+TEST_CASE("Wall added mass: bulk value far away, 3/8 (a/l)^3 correction, 0.803 at contact", "[harada]")
+{
+  CHECK(wallAddedMass(1e4).value == Approx(1).epsilon(1e-12));
+  for (double eps : {10.0, 100.0}) {
+    const double l = 1 + eps; // centre distance in radii
+    const double first = 3.0 / 8.0 / (l * l * l);
+    CHECK((wallAddedMass(eps).value - 1) / first == Approx(1).epsilon(2 / std::pow(2 * l, 3)));
+  }
+  // At contact the images sit at f_k = (k+2)/(k+1) a: C = 1 + 3 (zeta(3) - 1).
+  const double zeta3 = 1.2020569031595942;
+  CHECK(0.5 * wallAddedMass(1e-6).value == Approx(0.5 * (1 + 3 * (zeta3 - 1))).epsilon(5e-3));
+  // Exact derivative against central differences.
+  for (double eps : {1e-3, 0.1, 2.0}) {
+    const double d = 1e-6 * eps;
+    const double fd = (wallAddedMass(eps + d).value - wallAddedMass(eps - d).value) / (2 * d);
+    CHECK(wallAddedMass(eps).derivative == Approx(fd).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("Basset product quadrature: exact for linear u, order 1.5 for smooth u", "[harada]")
+{
+  BassetHistory linear(0.01, 0);
+  for (int k = 1; k <= 100; ++k) linear.push(3 * k * 0.01);
+  CHECK(linear.integral() == Approx(3 * 2 * 1.0).epsilon(1e-12)); // int_0^1 3/sqrt(1-s) ds = 6
+
+  std::vector<double> orders;
+  for (int n = 100; n <= 1600; n *= 2) orders.push_back(std::log2(bassetError(n) / bassetError(2 * n)));
+  for (double q : orders) {
+    INFO("observed order " << q);
+    CHECK(q == Approx(1.5).margin(0.05));
+  }
+  // The implicit split used by the integrator equals the committed integral.
+  BassetHistory b(0.01, 0);
+  for (int k = 1; k <= 10; ++k) b.push(std::sin(0.1 * k));
+  const double lagged = b.lagged() + b.newestWeight() * (std::sin(1.1) - b.last());
+  b.push(std::sin(1.1));
+  CHECK(lagged == Approx(b.integral()).epsilon(1e-14));
+}
+
+TEST_CASE("Harada: dry contact with the wall lasts t_c and returns the restitution", "[harada]")
+{
+  HaradaParams p = dragOnly();
+  p.drag = false;
+  p.contact = true;
+  p.gravity = 0;
+  p.dt = p.contactTime / 100;
+  const double hCol = 2 * p.radius * p.roughness;
+  const double v0 = -0.1;
+  HaradaModel m(p, p.radius + hCol + 10 * p.dt * 0.1, v0); // reaches the contact after ~10 steps
+  double start = -1, end = -1;
+  while (end < 0) {
+    const bool before = m.forces().contact != 0;
+    m.step();
+    const bool now = m.gap() < hCol;
+    if (now && start < 0) start = m.time() - p.dt;
+    if (!now && start >= 0 && !before) continue;
+    if (!now && start >= 0) end = m.time() - p.dt;
+  }
+  INFO("contact time " << end - start << " restitution " << -m.velocity() / v0);
+  // First-order stepping resolves contact start/end to one step: 1 % of t_c at 100 steps.
+  CHECK(end - start == Approx(p.contactTime).epsilon(0.02));
+  CHECK(-m.velocity() / v0 == Approx(p.restitution).epsilon(0.01));
+}
+
+TEST_CASE("Harada: quasi-steady lubrication approach U = F eps / (6 pi mu a)", "[harada]")
+{
+  // Weight against lubrication only. The approach decays exponentially (rate F / (6 pi mu a^2)),
+  // so inertia shifts the balance by m F eps / (a (6 pi mu a)^2): 8 % at eps = 1e-2, 0.08 % at
+  // eps = 1e-4, where the quasi-steady speed must hold to 1 %.
+  HaradaParams p = dragOnly();
+  p.lubrication = true;
+  p.roughness = 1e-6; // saturation well below the measured gap
+  p.dt = 1e-5;
+  HaradaModel m(p, p.radius * 1.05, 0);
+  const double F = (m.mass() - 2 * m.bulkAddedMass()) * -p.gravity;
+  while (m.gap() > 1e-4 * p.radius) m.step();
+  const double eps = m.gap() / p.radius;
+  const double quasiSteady = F * eps / (6 * M_PI * p.viscosity * p.radius);
+  INFO("eps " << eps << " U / U_quasi-steady " << -m.velocity() / quasiSteady);
+  CHECK(-m.velocity() == Approx(quasiSteady).epsilon(1e-2));
+}
+
+TEST_CASE("Harada: the seed sphere (St 3.3) settles on the wall without rebound", "[harada]")
+{
+  HaradaParams p; // the seed case, every term on
+  HaradaModel m(p, p.radius + 3 * 2 * p.radius, 0);
+  double vMin = 0, vMaxAfter = 0;
+  bool touched = false;
+  while (m.time() < 1.2) {
+    m.step();
+    vMin = std::min(vMin, m.velocity());
+    touched = touched || m.forces().contact != 0;
+    if (touched) vMaxAfter = std::max(vMaxAfter, m.velocity());
+  }
+  INFO("peak fall speed " << -vMin << ", largest upward speed after contact " << vMaxAfter);
+  CHECK(touched);
+  CHECK(-vMin < 0.1462);                   // still accelerating / braked by the wall
+  CHECK(vMaxAfter < 1e-3 * 0.1462);        // no rebound (PHYSICS.md 5: none below St ~ 10)
+  CHECK(m.gap() < 2 * p.radius * p.roughness);
+}
