@@ -60,7 +60,7 @@ struct ParticleConfig {
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
   ContactConfig contact;
   int substeps = 1;           // -dem_substeps per fluid step
-  double skin = 0.2;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
+  double skin = 0.1;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
   bool trackAll = false;      // -track_particles all
   std::vector<std::int64_t> track; // -track_particles id,id,...
 
