@@ -1,0 +1,132 @@
+// Particle input: generators (lattice, random packing) and the CSV and HDF5 readers, and the
+// validation that rejects bad particles with a message naming the problem.
+#include "../support/DemFixtures.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/particles/Generators.hpp"
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <hdf5.h>
+#include <unistd.h>
+
+using namespace vp;
+using namespace vp::test;
+
+namespace {
+
+double minDistanceRatio(const std::vector<ParticleRecord>& p)  // min |x_i - x_j| / (a_i + a_j)
+{
+  double m = HUGE_VAL;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) m = std::min(m, norm(p[i].x - p[j].x) / (p[i].radius + p[j].radius));
+  return m;
+}
+
+std::string tempPath(const char* name) { return "/tmp/vp_test_" + std::to_string(getpid()) + "_" + name; }
+
+} // namespace
+
+TEST_CASE("Lattice generator: count, no overlap, inside the box, reproducible by seed", "[dem]")
+{
+  LatticeInput in;
+  in.set = true;
+  in.lo = {0, 0, 0};
+  in.hi = {0.1, 0.05, 0.03};
+  in.spacing = 0.01;
+  in.radius = 0.004;
+  in.jitter = 1;
+  in.seed = 3;
+  const auto p = latticeParticles(in, 1500);
+  REQUIRE(p.size() == 10 * 5 * 3);
+  CHECK(minDistanceRatio(p) >= 1);
+  for (const auto& r : p)
+    for (int d = 0; d < 3; ++d) CHECK((r.x[d] - r.radius >= in.lo[d] && r.x[d] + r.radius <= in.hi[d]));
+  const auto again = latticeParticles(in, 1500);
+  CHECK(again[17].x.x == p[17].x.x);
+  in.seed = 4;
+  CHECK(latticeParticles(in, 1500)[17].x.x != p[17].x.x);
+}
+
+TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by seed", "[dem]")
+{
+  RandomInput in;
+  in.set = true;
+  in.lo = {0, 0, 0};
+  in.hi = {0.05, 0.05, 0.05};
+  in.volumeFraction = 0.25;
+  in.radius = 0.002;
+  in.seed = 9;
+  const auto p = randomParticles(in, 2500);
+  const double v = 4.0 / 3.0 * M_PI * std::pow(in.radius, 3);
+  CHECK(std::fabs(p.size() * v / 1.25e-4 - 0.25) < v / 1.25e-4);
+  CHECK(minDistanceRatio(p) >= 1);
+  for (const auto& r : p)
+    for (int d = 0; d < 3; ++d) CHECK((r.x[d] >= r.radius && r.x[d] <= 0.05 - r.radius));
+  CHECK(randomParticles(in, 2500)[100].x.y == p[100].x.y);
+  in.volumeFraction = 0.35;  // within the option's range but beyond what this small box takes
+  in.hi = {0.009, 0.009, 0.009};
+  CHECK_THROWS_WITH(randomParticles(in, 2500), Catch::Contains("-particles_random") && Catch::Contains("lower the volume fraction"));
+}
+
+TEST_CASE("CSV and HDF5 particle tables read the same particles", "[dem]")
+{
+  const std::string csv = tempPath("p.csv"), h5 = tempPath("p.h5");
+  {
+    std::ofstream f(csv);
+    f << "x,id,y,z,radius,density,vx,vy,vz,wx,wy,wz,colour\n"  // any column order, extra columns
+      << "0.1,5,0.2,0.3,0.01,1000,1,2,3,4,5,6,red\n"
+      << "0.4,2,0.5,0.6,0.02,2000,-1,-2,-3,-4,-5,-6,blue\n";
+  }
+  const double cols[12][2] = {{5, 2}, {0.1, 0.4}, {0.2, 0.5}, {0.3, 0.6}, {0.01, 0.02}, {1000, 2000},
+                              {1, -1}, {2, -2}, {3, -3}, {4, -4}, {5, -5}, {6, -6}};
+  {
+    hid_t file = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    hsize_t n = 2;
+    for (int c = 0; c < 12; ++c) {
+      hid_t space = H5Screate_simple(1, &n, nullptr);
+      hid_t ds = H5Dcreate2(file, kParticleColumns[c], H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, cols[c]);
+      H5Dclose(ds);
+      H5Sclose(space);
+    }
+    H5Fclose(file);
+  }
+  const auto a = readParticleCsv(csv), b = readParticleHdf5(h5);
+  REQUIRE(a.size() == 2);
+  REQUIRE(b.size() == 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    CHECK(a[i].id == b[i].id);
+    CHECK(a[i].radius == b[i].radius);
+    CHECK(a[i].density == b[i].density);
+    for (int d = 0; d < 3; ++d) CHECK((a[i].x[d] == b[i].x[d] && a[i].v[d] == b[i].v[d] && a[i].w[d] == b[i].w[d]));
+  }
+  CHECK(a[1].id == 2);
+  CHECK(a[1].w.z == -6);
+  {
+    hid_t file = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    H5Fclose(file);
+  }
+  CHECK_THROWS_WITH(readParticleHdf5(h5), Catch::Contains("lacks the dataset id"));
+  std::remove(csv.c_str());
+  std::remove(h5.c_str());
+}
+
+TEST_CASE("Particle validation names the problem", "[dem]")
+{
+  Config c = boxConfig({0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4});
+  auto fails = [&](std::vector<ParticleRecord> p, const char* what) {
+    INFO(what);
+    CHECK_THROWS_AS(validateParticles(p, c, 0.01, "-particles_file"), InputError);
+    CHECK_THROWS_WITH(validateParticles(p, c, 0.01, "-particles_file"), Catch::Contains(what));
+  };
+  const ParticleRecord ok = sphere(1, {0.05, 0.05, 0.05}, 0.01, 1000);
+  fails({ok, sphere(2, {0.069, 0.05, 0.05}, 0.01, 1000)}, "overlap");
+  fails({sphere(1, {0.005, 0.05, 0.05}, 0.01, 1000)}, "outside the domain");
+  fails({sphere(1, {0.05, 0.05, 0.05}, 0, 1000)}, "radius must be > 0");
+  fails({sphere(1, {0.05, 0.05, 0.05}, 0.01, -1)}, "density must be > 0");
+  fails({ok, sphere(1, {0.08, 0.05, 0.05}, 0.01, 1000)}, "duplicate particle id 1");
+  // Touching within the tolerance, and overlapping across a periodic face.
+  CHECK_NOTHROW(validateParticles({ok, sphere(2, {0.0699, 0.05, 0.05}, 0.01, 1000)}, c, 0.01, "-particles_file"));
+  c.bc.type[0] = c.bc.type[1] = BcType::Periodic;
+  fails({sphere(1, {0.005, 0.05, 0.05}, 0.01, 1000), sphere(2, {0.09, 0.05, 0.05}, 0.01, 1000)}, "overlap");
+}
