@@ -97,15 +97,19 @@ void DemSolver::computeForces(double dt)
     const double r2 = dot(d, d);
     const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
     if (r2 >= reach * reach) {
-      P.spring[k] = Vec3{};
+      if (P.touching[k]) {  // released: the spring is dropped
+        P.spring[k] = Vec3{};
+        P.touching[k] = 0;
+      }
       continue;
     }
+    P.touching[k] = 1;
     const double r = std::sqrt(r2);
     const Vec3 n = (1 / r) * d;
     // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
     const double scale = r / (s.radius[i] + s.radius[j]);
     const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
-    const ContactForce f = contactForce(n, reach - r, vc, P.coef[k], P.spring[k], dt);
+    const ContactForce f = contactForce(n, reach - r, vc, P.laws[P.law[k]], P.spring[k], dt);
     const Vec3 force = f.normal + f.tangential;
     const Vec3 lever = scale * cross(n, f.tangential);
     // Sphere-sphere lubrication (interactions/Lubrication) adds its force and torque lever here,
@@ -131,7 +135,7 @@ void DemSolver::computeForces(double dt)
       const double overlap = a * (1 + 2 * rough) - dist;
       Vec3& spring = s.wallSpring[i][f];
       if (overlap <= 0 || s.fixed(i)) {
-        spring = Vec3{};
+        if (spring.x != 0 || spring.y != 0 || spring.z != 0) spring = Vec3{};  // released: dropped
         continue;
       }
       const Vec3 n = wall.normal();

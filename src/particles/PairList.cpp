@@ -12,11 +12,11 @@ struct Candidate {
 
 } // namespace
 
-void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law)
+void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& contactLaw)
 {
   std::vector<Candidate> c;
   c.reserve(first.size() + first.size() / 4 + 16);
-  const double rough = law.roughness();
+  const double rough = contactLaw.roughness();
   buckets.forEachCandidate(s.nOwned, [&](std::size_t i, std::size_t j) {
     const double range = (s.radius[i] + s.radius[j]) * (1 + rough) + skin;
     const Vec3 d = s.x[i] - s.x[j];
@@ -32,16 +32,26 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
   const std::size_t n = c.size();
   first.resize(n);
   second.resize(n);
-  coef.resize(n);
+  law.resize(n);
   spring.resize(n);
+  touching.assign(n, 0);
+  laws.clear();
+  lawOfMass_.clear();
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t a = c[k].first, b = c[k].second;
     first[k] = a;
     second[k] = b;
-    coef[k] = law.coefficients(1 / (s.invMass[a] + s.invMass[b]), false);
+    const double meff = 1 / (s.invMass[a] + s.invMass[b]);
+    auto found = lawOfMass_.find(meff);
+    if (found == lawOfMass_.end()) {
+      found = lawOfMass_.emplace(meff, static_cast<std::uint32_t>(laws.size())).first;
+      laws.push_back(contactLaw.coefficients(meff, false));
+    }
+    law[k] = found->second;
     const std::size_t owner = a < s.nOwned ? a : b;
     const Vec3* h = findSpring(s.history[owner], s.id[owner == a ? b : a]);
     spring[k] = h ? *h : Vec3{};
+    touching[k] = h != nullptr;
   }
 }
 

@@ -10,14 +10,17 @@
 #include "vp/particles/CellBuckets.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace vp {
 
 struct PairList {
   std::vector<std::uint32_t> first, second;   // local indices, id[first] < id[second]
-  std::vector<ContactCoefficients> coef;
+  std::vector<std::uint32_t> law;              // index into `laws` (pairs of equal m* share one)
+  std::vector<ContactCoefficients> laws;
   std::vector<Vec3> spring;                    // tangential spring (canonical orientation)
+  std::vector<std::uint8_t> touching;          // in contact at the last force evaluation
 
   std::size_t size() const { return first.size(); }
 
@@ -26,6 +29,9 @@ struct PairList {
   void build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law);
   // Copies the non-zero springs into the ContactHistory of the owned members.
   void exportHistory(ParticleStore& s) const;
+
+private:
+  std::unordered_map<double, std::uint32_t> lawOfMass_;
 };
 
 } // namespace vp
