@@ -173,10 +173,11 @@ void DemSolver::substep(double dt)
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
     s.x[i] += dt * s.vHalf[i];
-    s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
   }
+  // A loop of its own: independent rotations pipeline better than inside the kick.
+  for (std::size_t i = 0; i < s.nOwned; ++i) s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
   if (needRebuild())
     rebuild();
   else
