@@ -26,8 +26,12 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
   : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c))
 {
-  for (int f = 0; f < 6; ++f)
+  for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
+    // Periodic faces are pushed to infinity for the quick wall-proximity test.
+    const double far = walls_[f].active ? walls_[f].position : (f % 2 ? HUGE_VAL : -HUGE_VAL);
+    (f % 2 ? wallHi_ : wallLo_)[f / 2] = far;
+  }
   setUp(all);
 }
 
@@ -127,35 +131,46 @@ void DemSolver::computeForces(double dt)
   ContactCoefficients wallCoef;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
-    const double a = s.radius[i];
+    const double a = s.radius[i], reach = a * (1 + 2 * rough);
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    for (int f : activeWalls_) {
-      const Wall& wall = walls_[f];
-      const double dist = wall.distance(s.x[i]);
-      const double overlap = a * (1 + 2 * rough) - dist;
-      Vec3& spring = s.wallSpring[i][f];
-      if (overlap <= 0 || s.fixed(i)) {
-        if (spring.x != 0 || spring.y != 0 || spring.z != 0) spring = Vec3{};  // released: dropped
-        continue;
+    if (s.wallTouch[i] || nearWall(s.x[i], reach)) {
+      std::uint8_t touch = 0;
+      for (int f : activeWalls_) {
+        const Wall& wall = walls_[f];
+        const double dist = wall.distance(s.x[i]);
+        const double overlap = reach - dist;
+        Vec3& spring = s.wallSpring[i][f];
+        if (overlap <= 0 || s.fixed(i)) {
+          spring = Vec3{};  // released: the spring is dropped
+          continue;
+        }
+        touch |= 1 << f;
+        const Vec3 n = wall.normal();
+        // The contact point lies on the wall plane: lever arm = distance.
+        const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
+        if (s.mass[i] != coefMass) {
+          coefMass = s.mass[i];
+          wallCoef = law_.coefficients(coefMass, true);
+        }
+        const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
+        F += c.normal + c.tangential;
+        T -= dist * cross(n, c.tangential);
+        // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
+        ++wallContacts;
       }
-      const Vec3 n = wall.normal();
-      // The contact point lies on the wall plane: lever arm = distance.
-      const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
-      if (s.mass[i] != coefMass) {
-        coefMass = s.mass[i];
-        wallCoef = law_.coefficients(coefMass, true);
-      }
-      const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
-      F += c.normal + c.tangential;
-      T -= dist * cross(n, c.tangential);
-      // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
-      ++wallContacts;
+      s.wallTouch[i] = touch;
     }
     s.force[i] = F + s.mass[i] * gravity_;
     s.torque[i] = T;
   }
   contacts_ = contacts;
   wallContacts_ = wallContacts;
+}
+
+bool DemSolver::nearWall(const Vec3& x, double reach) const
+{
+  return (x.x - wallLo_.x < reach) || (wallHi_.x - x.x < reach) || (x.y - wallLo_.y < reach) ||
+         (wallHi_.y - x.y < reach) || (x.z - wallLo_.z < reach) || (wallHi_.z - x.z < reach);
 }
 
 void DemSolver::substep(double dt)

@@ -24,6 +24,7 @@ void ParticleStore::resize(std::size_t n)
   vHalf.resize(n);
   wHalf.resize(n);
   wallSpring.resize(n);
+  wallTouch.resize(n);
   history.resize(n);
 }
 
@@ -51,6 +52,9 @@ void ParticleStore::append(const ParticleRecord& r)
   vHalf[i] = r.vHalf;
   wHalf[i] = r.wHalf;
   wallSpring[i] = r.wallSpring;
+  wallTouch[i] = 0;
+  for (int f = 0; f < 6; ++f)
+    if (r.wallSpring[f].x != 0 || r.wallSpring[f].y != 0 || r.wallSpring[f].z != 0) wallTouch[i] |= 1 << f;
   history[i] = r.history;
 }
 
@@ -86,7 +90,7 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
       mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i];
       x[k] = x[i]; v[k] = v[i]; w[k] = w[i]; q[k] = q[i];
       force[k] = force[i]; torque[k] = torque[i]; fhyd[k] = fhyd[i]; thyd[k] = thyd[i];
-      xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i]; wallSpring[k] = wallSpring[i]; history[k] = std::move(history[i]);
+      xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i]; wallSpring[k] = wallSpring[i]; wallTouch[k] = wallTouch[i]; history[k] = std::move(history[i]);
     }
     ++k;
   }

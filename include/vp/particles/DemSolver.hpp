@@ -50,6 +50,7 @@ private:
   bool needRebuild() const;
   void rebuild();
   void computeForces(double dt);
+  bool nearWall(const Vec3& x, double reach) const;
 
   const Grid& grid_;
   ParticleConfig pc_;
@@ -57,6 +58,7 @@ private:
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
   std::vector<int> activeWalls_;
+  Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)
   double skin_ = 0;        // neighbour-list skin [m]
   double rmax_ = 0;
   std::unique_ptr<ParticleExchange> exchange_;

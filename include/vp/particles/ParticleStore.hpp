@@ -39,6 +39,7 @@ struct ParticleStore {
   std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
   std::vector<Vec3> vHalf, wHalf;   // mid-step velocities inside a DEM sub-step
   std::vector<std::array<Vec3, 6>> wallSpring;
+  std::vector<std::uint8_t> wallTouch;   // bit f: wallSpring[f] may be non-zero (derived on append)
   std::vector<ContactHistory> history;
 
   std::size_t nOwned = 0;
