@@ -24,7 +24,7 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 }
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
-  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c))
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off)
 {
   for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
@@ -175,6 +175,15 @@ bool DemSolver::nearWall(const Vec3& x, double reach) const
 
 void DemSolver::substep(double dt)
 {
+  if (hydro_)
+    substep<true>(dt);
+  else
+    substep<false>(dt);
+}
+
+template <bool Hydro>
+void DemSolver::substep(double dt)
+{
   ParticleStore& s = store_;
   const double half = 0.5 * dt;
   // Velocity Verlet: half kick, drift, forces at the new positions, half kick. The forces see
@@ -183,8 +192,8 @@ void DemSolver::substep(double dt)
   // steps per contact).
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (s.fixed(i)) continue;
-    const Vec3 dv = (half * s.invMass[i]) * (s.force[i] + s.fhyd[i]);
-    const Vec3 dw = (half * s.invInertia[i]) * (s.torque[i] + s.thyd[i]);
+    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + s.fhyd[i] : s.force[i]);
+    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + s.thyd[i] : s.torque[i]);
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
     s.x[i] += dt * s.vHalf[i];
@@ -201,8 +210,8 @@ void DemSolver::substep(double dt)
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (s.fixed(i)) continue;
-    s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (s.force[i] + s.fhyd[i]);
-    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (s.torque[i] + s.thyd[i]);
+    s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (Hydro ? s.force[i] + s.fhyd[i] : s.force[i]);
+    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + s.thyd[i] : s.torque[i]);
     ke += s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i];
   }
   kineticEnergy_ = 0.5 * ke;

@@ -2,7 +2,7 @@
 // The particle layer: soft-sphere DEM with friction on the grid's domain decomposition.
 // Simulation calls advance(t, dt) once per fluid step (M = -dem_substeps velocity-Verlet sub-steps
 // of dt/M, with the hydrodynamic force and torque in particles().fhyd/thyd held fixed), and
-// diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step.
+// diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step and fhyd/thyd are ignored.
 #include "vp/core/Config.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/interactions/ContactModel.hpp"
@@ -47,6 +47,8 @@ public:
 private:
   void setUp(const std::vector<ParticleRecord>& all);
   void substep(double dt);
+  template <bool Hydro>
+  void substep(double dt);
   bool needRebuild() const;
   void rebuild();
   void computeForces(double dt);
@@ -57,6 +59,7 @@ private:
   ContactLaw law_;
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
+  bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)
   double skin_ = 0;        // neighbour-list skin [m]
