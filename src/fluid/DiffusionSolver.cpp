@@ -1,27 +1,17 @@
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/OptionDefaults.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <string>
 
 namespace vp {
 
-namespace {
-
-void setDefault(const char* name, const char* value)
-{
-  PetscBool has;
-  VP_CALL(PetscOptionsHasName(nullptr, nullptr, name, &has));
-  if (!has) VP_CALL(PetscOptionsSetValue(nullptr, name, value));
-}
-
-} // namespace
-
 DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : grid_(grid)
 {
-  setDefault("-velocity_ksp_type", "cg");
-  setDefault("-velocity_pc_type", "jacobi");
-  setDefault("-velocity_ksp_norm_type", "unpreconditioned");
-  setDefault("-velocity_ksp_rtol", "1e-10");
+  setOptionDefault("-velocity_ksp_type", "cg");
+  setOptionDefault("-velocity_pc_type", "jacobi");
+  setOptionDefault("-velocity_ksp_norm_type", "unpreconditioned");
+  setOptionDefault("-velocity_ksp_rtol", "1e-10");
   PetscBool set;
   VP_CALL(PetscOptionsHasName(nullptr, "velocity_", "-ksp_atol", &set));
   userAtol_ = set;
