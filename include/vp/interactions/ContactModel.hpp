@@ -38,8 +38,9 @@ struct ContactForce {
 // One contact step. n: unit normal from the partner (or wall) to the particle; overlap: a_i + a_j +
 // roughness gap - distance (> 0 in contact); vc: velocity of the particle's contact point relative
 // to the partner's; spring: the tangential spring s (history), updated in place over dt.
-// The old spring is first rotated onto the current tangent plane (length kept), then stretched by
-// v_t dt; if the trial force exceeds mu |F_n| the force is capped and the spring reset to the
+// The old spring is first brought onto the current tangent plane by projection (a rotation to
+// first order in the normal's turn theta per step; its length shrinks by theta^2 / 2), then
+// stretched by v_t dt; if the trial force exceeds mu |F_n| the force is capped and the spring reset to the
 // length that gives exactly the capped force (gross sliding).
 inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, const ContactCoefficients& c,
                                  Vec3& spring, double dt)
@@ -47,12 +48,7 @@ inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, 
   const double vn = dot(vc, n);
   const double fnMag = c.kn * overlap - c.gn * vn;
   const Vec3 vt = vc - vn * n;
-  const double s2 = dot(spring, spring);
-  if (s2 > 0) {
-    Vec3 p = spring - dot(spring, n) * n;
-    const double p2 = dot(p, p);
-    spring = p2 > 0 ? p * std::sqrt(s2 / p2) : Vec3{};
-  }
+  spring -= dot(spring, n) * n;
   spring += dt * vt;
   Vec3 ft = -c.kt * spring - c.gt * vt;
   const double cap = c.mu * std::fabs(fnMag);
