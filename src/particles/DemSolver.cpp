@@ -188,7 +188,7 @@ void DemSolver::substep(double dt)
   const double half = 0.5 * dt;
   // Velocity Verlet: half kick, drift, forces at the new positions, half kick. The forces see
   // the predicted end-of-step velocities v^n + dt a^n (sent to ghosts), which makes the velocity-
-  // dependent damping second order (at the half-step velocity restitution errs by ~1 % at 50
+  // dependent damping second order (at the half-step velocity restitution errs by 1-3 % at 50
   // steps per contact).
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (s.fixed(i)) continue;
