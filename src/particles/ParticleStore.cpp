@@ -41,8 +41,9 @@ void ParticleStore::append(const ParticleRecord& r)
   invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
   invInertia[i] = (r.flags & kFixed) ? 0 : 1 / (0.4 * m * radius[i] * radius[i]);
   x[i] = r.x;
-  v[i] = r.v;
-  w[i] = r.w;
+  // A fixed particle does not move (the integrator relies on it: zero inverse mass, zero velocity).
+  v[i] = (r.flags & kFixed) ? Vec3{} : r.v;
+  w[i] = (r.flags & kFixed) ? Vec3{} : r.w;
   q[i] = r.q;
   force[i] = r.force;
   torque[i] = r.torque;

@@ -147,3 +147,25 @@ TEST_CASE("Oblique sphere-wall impacts: sliding follows rigid-body theory, stick
     CHECK(std::fabs(psi2 - (psiIn - shift)) > 0.05);
   }
 }
+
+TEST_CASE("Impact on a fixed sphere: it stays put and acts as infinite mass", "[dem]")
+{
+  Config c = boxConfig({0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4});
+  const double tc = 1e-3, dt = tc / 50, a = 0.005, v = 0.1, e = 0.9;
+  ParticleConfig pc = contactConfig(tc, e, 0.3);
+  ParticleRecord anchor = sphere(1, {0.05, 0.05, 0.05}, a, 2500);
+  anchor.flags = kFixed;
+  const double gap = v * dt * 5.3;
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  DemSolver dem(grid, c, pc, {anchor, sphere(2, {0.05 - 2 * a - gap, 0.05, 0.05}, a, 2500, {v, 0, 0})});
+  const ParticleStore& s = dem.particles();
+  const std::size_t fixedIndex = s.id[0] == 1 ? 0 : 1, mobile = 1 - fixedIndex;
+  const Impact r = runImpact(
+    dem, dt, [&](const ParticleStore& p) { return p.x[fixedIndex].x - p.x[mobile].x - 2 * a; },
+    [&](const ParticleStore& p) { return p.v[mobile].x; });
+  // m* = m of the moving sphere, so the duration is t_c and the rebound e.
+  CHECK(std::fabs(r.restitution - e) / e < 0.01);
+  CHECK(std::fabs(r.duration - tc) / tc < 0.01);
+  CHECK(s.x[fixedIndex].x == 0.05);
+  CHECK(norm(s.v[fixedIndex]) == 0);
+}
