@@ -70,7 +70,7 @@ void DemSolver::rebuild()
   ParticleStore& s = store_;
   for (std::size_t i = 0; i < s.nOwned; ++i) s.history[i].clear();
   pairs_.exportHistory(s);
-  migrations_ += exchange_->migrate(s);
+  exchange_->migrate(s);
   exchange_->createGhosts(s);
   Vec3 lo, hi;
   const double h = exchange_->halo();

@@ -47,7 +47,6 @@ public:
         }
   }
 
-  int cells(int d) const { return n_[d]; }
 
 private:
   int cellIndex(const Vec3& p) const;

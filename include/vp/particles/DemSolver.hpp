@@ -39,9 +39,7 @@ public:
   DemDiagnostics diagnostics() const;
   // A stable DEM step: the shortest contact duration / 50 (collective).
   double suggestedStep() const;
-  double halo() const { return exchange_->halo(); }
   const ContactLaw& law() const { return law_; }
-  std::size_t migrations() const { return migrations_; }
   std::size_t rebuilds() const { return rebuilds_; }
 
 private:
@@ -70,7 +68,7 @@ private:
   PairList pairs_;
   long contacts_ = 0, wallContacts_ = 0;
   double kineticEnergy_ = -1;   // of the owned particles after the last sub-step (-1: none yet)
-  std::size_t migrations_ = 0, rebuilds_ = 0;
+  std::size_t rebuilds_ = 0;
 };
 
 } // namespace vp

@@ -45,7 +45,6 @@ struct ParticleStore {
   std::size_t nOwned = 0;
 
   std::size_t size() const { return id.size(); }
-  std::size_t nGhost() const { return id.size() - nOwned; }
   bool fixed(std::size_t i) const { return flags[i] & kFixed; }
 
   // Appends a particle (at the end: call only when there are no ghosts, or for ghosts).
@@ -55,7 +54,6 @@ struct ParticleStore {
   // Keeps the owned particles with keep[i] != 0 (in order); requires no ghosts.
   void compactOwned(const std::vector<char>& keep);
   void dropGhosts() { resize(nOwned); }
-  void clear() { resize(0); nOwned = 0; }
 };
 
 } // namespace vp
