@@ -24,7 +24,8 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 }
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
-  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off)
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), gravity_(c.gravity),
+    walls_(domainWalls(c)), hydro_(!c.fluid.off)
 {
   for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
@@ -40,9 +41,13 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all)
   for (const ParticleRecord& r : all) rmax_ = std::max(rmax_, r.radius);
   if (rmax_ == 0) rmax_ = pc_.radius;
   skin_ = pc_.skin * 2 * rmax_;
-  // Halo: the farthest partner of a particle at list build (contact range + skin). The lubrication
-  // activation range adds here once lubrication is coupled.
-  const double halo = 2 * rmax_ * (1 + law_.roughness()) + skin_;
+  // Lubrication acts below the activation gap; it holds constant below the roughness gap, where
+  // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
+  const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
+  lub_.complete(hydro_ ? 1.5 * hmin / rmax_ : 0, 2 * pc_.contact.roughness);
+  if (lub_.model != LubModel::None) lubGap_ = lub_.activation * rmax_;
+  // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
+  const double halo = 2 * rmax_ * (1 + law_.roughness()) + lubGap_ + skin_;
   exchange_ = std::make_unique<ParticleExchange>(grid_, halo);
   for (const ParticleRecord& r : all)
     if (exchange_->owns(r.x)) store_.append(r);
@@ -79,7 +84,7 @@ void DemSolver::rebuild()
     hi[d] = exchange_->boxHi(d) + h;
   }
   buckets_.build(s.x, s.size(), lo, hi, h);
-  pairs_.build(s, buckets_, skin_, law_);
+  pairs_.build(s, buckets_, skin_, law_, lubGap_);
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     s.history[i].clear();
     s.xRebuild[i] = s.x[i];
@@ -95,35 +100,56 @@ void DemSolver::computeForces(double dt)
   // Ghost entries collect partial sums too (never used): no branch in the scatter.
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
   long contacts = 0;
+  const bool lubricated = lub_.model != LubModel::None;
   for (std::size_t k = 0; k < P.size(); ++k) {
     const std::uint32_t i = P.first[k], j = P.second[k];
     const Vec3 d = s.x[i] - s.x[j];
     const double r2 = dot(d, d);
     const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
-    if (r2 >= reach * reach) {
-      if (P.touching[k]) {  // released: the spring is dropped
-        P.spring[k] = Vec3{};
-        P.touching[k] = 0;
-      }
-      continue;
+    const bool touching = r2 < reach * reach;
+    if (!touching && P.touching[k]) {  // released: the spring is dropped
+      P.spring[k] = Vec3{};
+      P.touching[k] = 0;
     }
-    P.touching[k] = 1;
     const double r = std::sqrt(r2);
+    const double gap = r - s.radius[i] - s.radius[j];
+    const bool lubricating = lubricated && gap < lub_.activation * std::min(s.radius[i], s.radius[j]);
+    if (!touching && !lubricating) continue;
     const Vec3 n = (1 / r) * d;
-    // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
-    const double scale = r / (s.radius[i] + s.radius[j]);
-    const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
-    const ContactForce f = contactForce(n, reach - r, vc, P.laws[P.law[k]], P.spring[k], dt);
-    const Vec3 force = f.normal + f.tangential;
-    const Vec3 lever = scale * cross(n, f.tangential);
-    // Sphere-sphere lubrication (interactions/Lubrication) adds its force and torque lever here,
-    // from the same pair state (n, gap = r - a_i - a_j, relative velocity), before the scatter.
+    Vec3 force, torqueI, torqueJ;
+    if (touching) {
+      P.touching[k] = 1;
+      // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
+      const double scale = r / (s.radius[i] + s.radius[j]);
+      const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
+      const ContactForce f = contactForce(n, reach - r, vc, P.laws[P.law[k]], P.spring[k], dt);
+      force = f.normal + f.tangential;
+      const Vec3 lever = scale * cross(n, f.tangential);
+      torqueI = -s.radius[i] * lever;
+      torqueJ = -s.radius[j] * lever;
+      contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
+    }
+    if (lubricating) {
+      PairState st;
+      st.normal = -n;  // from i towards j
+      st.gap = gap;
+      st.radiusI = s.radius[i];
+      st.radiusJ = s.radius[j];
+      st.velocityI = s.v[i];
+      st.velocityJ = s.v[j];
+      st.angularVelocityI = s.w[i];
+      st.angularVelocityJ = s.w[j];
+      st.viscosity = mu_;
+      const PairForce l = lubricationForce(lub_, st);
+      force += l.forceI;
+      torqueI += l.torqueI;
+      torqueJ += l.torqueJ;
+    }
     // Pairs are sorted by (first id, second id): each particle receives in ascending partner id.
     s.force[i] += force;
-    s.torque[i] -= s.radius[i] * lever;
+    s.torque[i] += torqueI;
     s.force[j] -= force;
-    s.torque[j] -= s.radius[j] * lever;
-    contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
+    s.torque[j] += torqueJ;
   }
 
   long wallContacts = 0;
@@ -132,31 +158,45 @@ void DemSolver::computeForces(double dt)
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
     const double a = s.radius[i], reach = a * (1 + 2 * rough);
+    const double lubReach = lubricated ? a * (1 + lub_.activation) : 0;
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    if (s.wallTouch[i] || nearWall(s.x[i], reach)) {
+    if (s.wallTouch[i] || nearWall(s.x[i], std::max(reach, lubReach))) {
       std::uint8_t touch = 0;
       for (int f : activeWalls_) {
         const Wall& wall = walls_[f];
         const double dist = wall.distance(s.x[i]);
         const double overlap = reach - dist;
+        const Vec3 n = wall.normal();
         Vec3& spring = s.wallSpring[i][f];
         if (overlap <= 0 || s.fixed(i)) {
           spring = Vec3{};  // released: the spring is dropped
-          continue;
+        } else {
+          touch |= 1 << f;
+          // The contact point lies on the wall plane: lever arm = distance.
+          const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
+          if (s.mass[i] != coefMass) {
+            coefMass = s.mass[i];
+            wallCoef = law_.coefficients(coefMass, true);
+          }
+          const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
+          F += c.normal + c.tangential;
+          T -= dist * cross(n, c.tangential);
+          ++wallContacts;
         }
-        touch |= 1 << f;
-        const Vec3 n = wall.normal();
-        // The contact point lies on the wall plane: lever arm = distance.
-        const Vec3 vc = s.v[i] - cross(dist * s.w[i], n) - wall.velocity;
-        if (s.mass[i] != coefMass) {
-          coefMass = s.mass[i];
-          wallCoef = law_.coefficients(coefMass, true);
+        if (dist < lubReach && !s.fixed(i)) {
+          PairState st;
+          st.normal = -n;  // from the centre towards the wall
+          st.gap = dist - a;
+          st.radiusI = a;
+          st.radiusJ = kWallRadius;
+          st.velocityI = s.v[i];
+          st.velocityJ = wall.velocity;
+          st.angularVelocityI = s.w[i];
+          st.viscosity = mu_;
+          const PairForce l = lubricationForce(lub_, st);
+          F += l.forceI;
+          T += l.torqueI;
         }
-        const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
-        F += c.normal + c.tangential;
-        T -= dist * cross(n, c.tangential);
-        // Sphere-wall lubrication adds here, from the same state (n, gap = distance - a, vc).
-        ++wallContacts;
       }
       s.wallTouch[i] = touch;
     }

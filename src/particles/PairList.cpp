@@ -12,13 +12,14 @@ struct Candidate {
 
 } // namespace
 
-void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& contactLaw)
+void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& contactLaw,
+                     double lubricationGap)
 {
   std::vector<Candidate> c;
   c.reserve(first.size() + first.size() / 4 + 16);
   const double rough = contactLaw.roughness();
   buckets.forEachCandidate(s.nOwned, [&](std::size_t i, std::size_t j) {
-    const double range = (s.radius[i] + s.radius[j]) * (1 + rough) + skin;
+    const double range = (s.radius[i] + s.radius[j]) * (1 + rough) + lubricationGap + skin;
     const Vec3 d = s.x[i] - s.x[j];
     if (dot(d, d) >= range * range) return;
     if (s.invMass[i] + s.invMass[j] == 0) return;  // two fixed spheres never interact

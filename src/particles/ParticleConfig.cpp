@@ -1,4 +1,5 @@
 #include "vp/particles/ParticleConfig.hpp"
+#include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
 #include <cmath>
 #include <petscsys.h>
@@ -143,6 +144,7 @@ ParticleConfig ParticleConfig::fromOptions(MPI_Comm comm)
   VP_CALL(registerOptions(comm, c, raw));
   c.file = raw.file;
   parseTrack(raw.track, c);
+  c.lubrication = readLubricationOptions(comm);
   c.validate();
   return c;
 }

@@ -83,3 +83,11 @@ add_test(NAME dem_case_granular_collapse_dry
                  && test $(wc -l < dem_collapse/diagnostics.csv) -eq 1001 \
                  && test $(wc -l < dem_collapse/particle_1000.csv) -eq 1002")
 set_tests_properties(dem_case_granular_collapse_dry PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+
+# Lubrication in DEM-only runs: no grid to tie the gaps to, so they must be given.
+vp_bad_input(lub_needs_activation 1 "option -lub_activation: must be > 0 \\(gap over radius\\), got 0"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model blcm)
+vp_bad_input(lub_needs_saturation 1 "option -lub_saturation: must be in \\(0, -lub_activation = 0.1\\), got 0"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1)
+vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(valid: none, blcm, llcm\\)"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model stokes)

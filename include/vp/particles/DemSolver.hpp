@@ -55,6 +55,9 @@ private:
   const Grid& grid_;
   ParticleConfig pc_;
   ContactLaw law_;
+  LubricationParams lub_;  // model none: no lubrication pairs
+  double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
+  double lubGap_ = 0;      // largest activation gap, activation * largest radius [m]
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)

@@ -24,9 +24,10 @@ struct PairList {
 
   std::size_t size() const { return first.size(); }
 
-  // Pairs closer than (a_i + a_j)(1 + roughness) + skin; springs taken from the owned members'
-  // ContactHistory (which the caller fills before and clears after).
-  void build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law);
+  // Pairs closer than (a_i + a_j)(1 + roughness) + lubricationGap + skin; springs taken from the
+  // owned members' ContactHistory (which the caller fills before and clears after).
+  void build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law,
+             double lubricationGap);
   // Copies the non-zero springs into the ContactHistory of the owned members.
   void exportHistory(ParticleStore& s) const;
 

@@ -3,6 +3,7 @@
 // read from the PETSc options database and validated once; bad values raise vp::InputError naming
 // the option and the valid range.
 #include "vp/core/Vec3.hpp"
+#include "vp/interactions/LubricationModel.hpp"
 #include <cstdint>
 #include <mpi.h>
 #include <string>
@@ -59,6 +60,7 @@ struct ParticleConfig {
   double density = 2500;      // -particle_density [kg/m^3] (single, lattice, random)
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
   ContactConfig contact;
+  LubricationParams lubrication; // -lub_*: completed by DemSolver (activation and saturation defaults)
   int substeps = 1;           // -dem_substeps per fluid step
   double skin = 0.1;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
   bool trackAll = false;      // -track_particles all
