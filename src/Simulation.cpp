@@ -1,6 +1,7 @@
 #include "vp/Simulation.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
+#include "vp/coupling/HydroForce.hpp"
 #include "vp/fluid/AnalyticFlow.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <algorithm>
@@ -26,17 +27,27 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
   wallStart_ = MPI_Wtime();
   if (cfg_.fluid.off && !particleCfg_.any())
     throw InputError("option -fluid_off: a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+  if (particleCfg_.any() && !cfg_.fluid.off) {
+    penalization_ = std::make_unique<Penalization>(grid_, PenalizationConfig::fromOptions(comm), cfg_.fluid.rho,
+                                                   cfg_.fluid.nu());
+    particleCfg_.maskSupport = penalization_->support();
+  }
   if (particleCfg_.any()) dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
   fluid_ = std::make_unique<Projection>(grid_, cfg_);
   AnalyticFlow flow(cfg_);
   sampleVelocity(grid_, flow, 0, fluid_->velocity());
   samplePressure(grid_, flow, 0, fluid_->pressure());
   fluid_->applyBoundaryConditions();
+  if (penalization_) {
+    buildMask(0);
+    hydroSums_.assign(kHydroSums * dem_->particles().size(), 0.0);
+    hydroForce(0);
+  }
   if (cfg_.output.files) {
     makeOutputDir(comm, cfg_.output.dir);
     fields_ = std::make_unique<FieldWriter>(grid_, cfg_.output.dir);
     std::vector<std::string> columns{"step", "time", "dt", "cfl", "pressure_iterations", "max_divergence",
-                                     "kinetic_energy", "wall_time", "velocity_iterations"};
+                                     "kinetic_energy", "wall_time", "velocity_iterations", "mean_u", "mean_v", "mean_w"};
     if (dem_) {
       for (const char* c : {"particle_kinetic_energy", "contacts", "wall_contacts"}) columns.push_back(c);
       particleWriter_ = std::make_unique<ParticleWriter>(comm, cfg_.output.dir);
@@ -48,6 +59,18 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
 
 Simulation::~Simulation() = default;
 
+double Simulation::particleRate() const
+{
+  if (!dem_) return 0;
+  const ParticleStore& s = dem_->particles();
+  double rate = 0;
+  for (std::size_t i = 0; i < s.nOwned; ++i)
+    for (int c = 0; c < 3; ++c) rate = std::max(rate, (std::fabs(s.v[i][c]) + norm(s.w[i]) * s.radius[i]) / grid_.h(c));
+  double global = 0;
+  MPI_Allreduce(&rate, &global, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
+  return global;
+}
+
 double Simulation::nextDt() const
 {
   double dt = cfg_.time.dt;
@@ -57,7 +80,7 @@ double Simulation::nextDt() const
     const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
     dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : hmin * hmin / cfg_.fluid.nu();
     // Moving walls count too: they set the flow in motion from rest.
-    double rate = fluid_->stats().maxRate;
+    double rate = std::max(fluid_->stats().maxRate, particleRate());
     for (int f = 0; f < 6; ++f)
       for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
     if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
@@ -68,10 +91,41 @@ double Simulation::nextDt() const
   return dt;
 }
 
+void Simulation::buildMask(double dt)
+{
+  StageScope stage(Stage::Penalization);
+  dem_->syncGhosts();
+  penalization_->build(dem_->particles(), dt);
+}
+
+void Simulation::penalize()
+{
+  StageScope stage(Stage::Penalization);
+  penalization_->forces(dem_->particles(), fluid_->velocity(), hydroSums_);
+}
+
+void Simulation::hydroForce(double dt)
+{
+  StageScope stage(Stage::HydroForce);
+  // The fluid momentum inside each particle after the projection (the penalization sums are in).
+  penalization_->addFluidMomentum(dem_->particles(), fluid_->velocity(), hydroSums_);
+  hydroForces(dem_->particles(), dem_->exchange(), hydroSums_, dt, cfg_.fluid.rho, cfg_.gravity);
+}
+
 void Simulation::advance(double dt)
 {
   if (!cfg_.fluid.off) {
-    last_ = fluid_->step(dt);
+    if (penalization_) {
+      // Penalization implicit in the predictor, then the projection: the pressure then blocks the
+      // flow through the particles (docs/coupling.md).
+      buildMask(dt);
+      last_ = fluid_->predict(dt, penalization_->theta(), penalization_->thetaUs());
+      penalize();
+      last_.pressureIterations = fluid_->project(dt);
+      hydroForce(dt);
+    } else {
+      last_ = fluid_->step(dt);
+    }
     fluid_->finishStep();
   }
   if (dem_) dem_->advance(time_, dt);
@@ -94,7 +148,8 @@ void Simulation::run()
     wallLastStep_ = MPI_Wtime() - t0;
     const auto& s = fluid_->stats();
     std::vector<double> row{double(step_), time_, dt, dt * s.maxRate, double(last_.pressureIterations), s.maxDivergence,
-                            cfg_.fluid.rho * s.kineticEnergy, MPI_Wtime() - wallStart_, double(last_.velocityIterations)};
+                            cfg_.fluid.rho * s.kineticEnergy, MPI_Wtime() - wallStart_, double(last_.velocityIterations),
+                            s.meanVelocity.x, s.meanVelocity.y, s.meanVelocity.z};
     if (dem_) {
       const DemDiagnostics d = dem_->diagnostics();
       row.insert(row.end(), {d.kineticEnergy, double(d.contacts), double(d.wallContacts)});
@@ -118,7 +173,8 @@ void Simulation::output()
 {
   if (!fields_) return;
   StageScope stage(Stage::IO);
-  if (!cfg_.fluid.off) fields_->write(step_, time_, fluid_->velocityLocal(), fluid_->pressure());
+  if (!cfg_.fluid.off)
+    fields_->write(step_, time_, fluid_->velocityLocal(), fluid_->pressure(), penalization_ ? penalization_->chi() : nullptr);
   if (particleWriter_) particleWriter_->write(dem_->particles(), step_, time_);
   lastOutputStep_ = step_;
   if (cfg_.output.dt > 0)

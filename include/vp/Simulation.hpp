@@ -3,6 +3,7 @@
 // one time step (ARCHITECTURE.md 2), run() steps to -time_final or -time_max_steps with output,
 // diagnostics and progress lines.
 #include "vp/core/Config.hpp"
+#include "vp/coupling/Penalization.hpp"
 #include "vp/fluid/Projection.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/io/CsvWriter.hpp"
@@ -29,9 +30,16 @@ public:
   Projection& fluid() { return *fluid_; }
   const StepStats& lastStepStats() const { return last_; }
   DemSolver* particles() { return dem_.get(); }
+  Penalization* penalization() { return penalization_.get(); }
 
 private:
   void output();
+  // The penalization force on each particle from the predicted velocity, and the hydrodynamic
+  // forces once the velocity is projected (dt = 0: only the fluid momentum, initial state).
+  void penalize();
+  void hydroForce(double dt);
+  void buildMask(double dt);  // chi, u_s, theta from the particles' current state
+  double particleRate() const;  // max over particles of (|U_c| + |Omega| a) / h_c (collective)
   void monitor(double dt) const;
   void printSetup() const;
   void printSummary() const;
@@ -43,6 +51,8 @@ private:
   std::unique_ptr<CsvWriter> diagnostics_;
   ParticleConfig particleCfg_;
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
+  std::unique_ptr<Penalization> penalization_;     // particles in a fluid
+  std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
   std::unique_ptr<ParticleTracker> tracker_;
   double loopWall_ = 0;                            // wall time of the stepping loop

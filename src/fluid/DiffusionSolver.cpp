@@ -18,6 +18,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
   assemble(bc);
   VP_CALL(MatDuplicate(SL_, MAT_DO_NOT_COPY_VALUES, &A_));
   VP_CALL(DMCreateGlobalVector(grid.faceSolveDM(), &rhs_));
+  VP_CALL(DMCreateGlobalVector(grid.faceSolveDM(), &diag_));
   VP_CALL(KSPCreate(grid.comm(), &ksp_));
   VP_CALL(KSPSetOptionsPrefix(ksp_, "velocity_"));
   VP_CALL(KSPSetFromOptions(ksp_));
@@ -26,6 +27,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
 DiffusionSolver::~DiffusionSolver()
 {
   KSPDestroy(&ksp_);
+  VecDestroy(&diag_);
   VecDestroy(&rhs_);
   VecDestroy(&S_);
   MatDestroy(&A_);
@@ -103,15 +105,21 @@ void DiffusionSolver::assemble(const BoundaryConfig& bc)
   VP_CALL(MatAssemblyEnd(SL_, MAT_FINAL_ASSEMBLY));
 }
 
-int DiffusionSolver::solve(double a, Vec r, Vec du, double atol)
+int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 {
-  if (a != a_) {
-    // A = S - a S L; the pattern is that of S L, so the preconditioner is rebuilt in place.
+  if (a != a_ || theta) {
+    // A = S (1 + theta) - a S L; the pattern is that of S L, so the preconditioner is rebuilt in
+    // place. A theta changes every step (moving particles); without it A changes with dt only.
     VP_CALL(MatCopy(SL_, A_, SAME_NONZERO_PATTERN));
     VP_CALL(MatScale(A_, -a));
-    VP_CALL(MatDiagonalSet(A_, S_, ADD_VALUES));
+    VP_CALL(VecCopy(S_, diag_));
+    if (theta) {
+      VP_CALL(VecPointwiseMult(rhs_, S_, theta));
+      VP_CALL(VecAXPY(diag_, 1.0, rhs_));
+    }
+    VP_CALL(MatDiagonalSet(A_, diag_, ADD_VALUES));
     VP_CALL(KSPSetOperators(ksp_, A_, A_));
-    a_ = a;
+    a_ = theta ? -1 : a;
   }
   VP_CALL(VecPointwiseMult(rhs_, S_, r));
   if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol, PETSC_DEFAULT, PETSC_DEFAULT));

@@ -89,7 +89,7 @@ void faceToCentre(const Grid& g, PetscScalar**** u, PetscScalar**** centre)
 FieldStats stats(const Grid& g, PetscScalar**** u)
 {
   const double ih[3] = {1 / g.h(0), 1 / g.h(1), 1 / g.h(2)};
-  double maxDiv = 0, ke = 0, rate = 0;
+  double maxDiv = 0, ke = 0, rate = 0, sum[3] = {0, 0, 0};
   forOwned(g, [&](PetscInt i, PetscInt j, PetscInt k) {
     double div = 0;
     for (int c = 0; c < 3; ++c) {
@@ -97,6 +97,7 @@ FieldStats stats(const Grid& g, PetscScalar**** u)
       const double uc = u[k][j][i][c];
       div += (u[k + e[2]][j + e[1]][i + e[0]][c] - uc) * ih[c];
       ke += uc * uc;
+      sum[c] += uc;
       rate = std::max(rate, std::fabs(uc) * ih[c]);
     }
     maxDiv = std::max(maxDiv, std::fabs(div));
@@ -116,12 +117,15 @@ FieldStats stats(const Grid& g, PetscScalar**** u)
   }
   double local[3] = {maxDiv, rate, 0}, global[3];
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, g.comm());
-  double keGlobal = 0;
-  MPI_Allreduce(&ke, &keGlobal, 1, MPI_DOUBLE, MPI_SUM, g.comm());
+  // Energy and mean over the faces of the owned cells (face 0 of each cell: one face per cell).
+  double sums[4] = {ke, sum[0], sum[1], sum[2]}, sumsGlobal[4];
+  MPI_Allreduce(sums, sumsGlobal, 4, MPI_DOUBLE, MPI_SUM, g.comm());
+  const double keGlobal = sumsGlobal[0];
   FieldStats s;
   s.maxDivergence = global[0];
   s.maxRate = global[1];
   s.kineticEnergy = 0.5 * keGlobal * g.cellVolume();
+  s.meanVelocity = Vec3{sumsGlobal[1], sumsGlobal[2], sumsGlobal[3]} / double(g.cells());
   return s;
 }
 

@@ -64,6 +64,13 @@ Projection::~Projection()
 
 StepStats Projection::step(double dt)
 {
+  StepStats st = predict(dt);
+  st.pressureIterations = project(dt);
+  return st;
+}
+
+StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
+{
   const Grid& g = grid_;
   StepStats st;
   double uNorm = norm2(u_);
@@ -90,9 +97,25 @@ StepStats Projection::step(double dt)
   }
   {
     StageScope stage(Stage::Diffusion);
-    st.velocityIterations = diffusion_.solve(0.5 * nu_ * dt, rhs_, du_, 1e-14 * std::max(uNorm, norm2(rhs_)));
+    if (theta) {
+      // Penalization in the same implicit solve: rhs += theta (u_s - u^n), so that a steady state
+      // satisfies chi lambda (u - u_s) = the other momentum terms exactly (Brinkman), for any dt.
+      VP_CALL(VecPointwiseMult(du_, theta, u_));
+      VP_CALL(VecAXPY(rhs_, -1.0, du_));
+      VP_CALL(VecAXPY(rhs_, 1.0, thetaUs));
+    }
+    st.velocityIterations = diffusion_.solve(0.5 * nu_ * dt, rhs_, du_, 1e-14 * std::max(uNorm, norm2(rhs_)), theta);
     VP_CALL(VecAXPY(u_, 1.0, du_));  // u*
   }
+  std::swap(N_, Nold_);
+  dtOld_ = dt;
+  return st;
+}
+
+int Projection::project(double dt)
+{
+  const Grid& g = grid_;
+  int iterations;
   {
     StageScope stage(Stage::Pressure);
     VP_CALL(DMGlobalToLocal(g.faceDM(), u_, INSERT_VALUES, uL_));
@@ -104,7 +127,7 @@ StepStats Projection::step(double dt)
     }
     VP_CALL(VecScale(div_, -1.0));
     double hmin = std::min({g.h(0), g.h(1), g.h(2)});
-    st.pressureIterations = pressure_.solve(div_, psi_, 1e-13 * norm2(u_) / hmin);
+    iterations = pressure_.solve(div_, psi_, 1e-13 * norm2(u_) / hmin);
     VP_CALL(DMGlobalToLocal(g.cellDM(), psi_, INSERT_VALUES, psiL_));
     CellArray psi(g.cellDM(), psiL_);
     fillCellGhosts(g, psi.a);
@@ -112,9 +135,7 @@ StepStats Projection::step(double dt)
     ops::addGradient(g, psi.a, -1.0, u.a);
     VP_CALL(VecAXPY(p_, rho_ / dt, psi_));
   }
-  std::swap(N_, Nold_);
-  dtOld_ = dt;
-  return st;
+  return iterations;
 }
 
 void Projection::applyBoundaryConditions()

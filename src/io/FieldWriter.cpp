@@ -48,10 +48,35 @@ FieldWriter::FieldWriter(const Grid& grid, std::string dir) : grid_(grid), dir_(
   VP_CALL(PetscObjectSetName((PetscObject)centre_, "velocity"));
 }
 
-FieldWriter::~FieldWriter() { VecDestroy(&centre_); }
-
-void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure)
+FieldWriter::~FieldWriter()
 {
+  VecDestroy(&chiLocal_);
+  VecDestroy(&chiCell_);
+  VecDestroy(&centre_);
+}
+
+void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure, Vec chi)
+{
+  if (chi) {
+    if (!chiCell_) {
+      VP_CALL(DMCreateGlobalVector(grid_.cellDM(), &chiCell_));
+      VP_CALL(PetscObjectSetName((PetscObject)chiCell_, "chi"));
+      VP_CALL(DMCreateLocalVector(grid_.faceDM(), &chiLocal_));
+    }
+    // Periodic ghosts come from PETSc; beyond a wall the mask is zero (local vectors start at 0).
+    VP_CALL(VecSet(chiLocal_, 0));
+    VP_CALL(DMGlobalToLocal(grid_.faceDM(), chi, INSERT_VALUES, chiLocal_));
+    PetscScalar ****f, ***c;
+    VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), chiLocal_, &f));
+    VP_CALL(DMDAVecGetArray(grid_.cellDM(), chiCell_, &c));
+    for (PetscInt k = grid_.start(2); k < grid_.end(2); ++k)
+      for (PetscInt j = grid_.start(1); j < grid_.end(1); ++j)
+        for (PetscInt i = grid_.start(0); i < grid_.end(0); ++i)
+          c[k][j][i] = (f[k][j][i][0] + f[k][j][i + 1][0] + f[k][j][i][1] + f[k][j + 1][i][1] + f[k][j][i][2] +
+                        f[k + 1][j][i][2]) / 6;
+    VP_CALL(DMDAVecRestoreArray(grid_.cellDM(), chiCell_, &c));
+    VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), chiLocal_, &f));
+  }
   {
     PetscScalar ****u, ****c;
     VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), velocityLocal, &u));
@@ -66,6 +91,7 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure)
   VP_CALL(VecView(centre_, viewer));
   VP_CALL(PetscObjectSetName((PetscObject)pressure, "pressure"));
   VP_CALL(VecView(pressure, viewer));
+  if (chi) VP_CALL(VecView(chiCell_, viewer));
   VP_CALL(PetscViewerDestroy(&viewer));
 
   int rank;
@@ -85,12 +111,12 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure)
     H5Gclose(root);
     H5Fclose(file);
     snapshots_.emplace_back(step, time);
-    writeXdmf();
+    writeXdmf(chi != nullptr);
   }
   MPI_Barrier(grid_.comm());
 }
 
-void FieldWriter::writeXdmf() const
+void FieldWriter::writeXdmf(bool chi) const
 {
   const int nx = grid_.n(0), ny = grid_.n(1), nz = grid_.n(2);
   const std::string tmp = dir_ + "/fields.xmf.tmp";
@@ -113,8 +139,12 @@ void FieldWriter::writeXdmf() const
         << file << ":/velocity</DataItem>\n  </Attribute>\n"
         << "  <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
         << "    <DataItem Dimensions=\"" << nz << " " << ny << " " << nx << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-        << file << ":/pressure</DataItem>\n  </Attribute>\n"
-        << "</Grid>\n";
+        << file << ":/pressure</DataItem>\n  </Attribute>\n";
+      if (chi)
+        x << "  <Attribute Name=\"chi\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+          << "    <DataItem Dimensions=\"" << nz << " " << ny << " " << nx << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+          << file << ":/chi</DataItem>\n  </Attribute>\n";
+      x << "</Grid>\n";
     }
     x << "</Grid>\n</Domain>\n</Xdmf>\n";
   }

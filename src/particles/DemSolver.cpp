@@ -47,7 +47,8 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all)
   lub_.complete(hydro_ ? 1.5 * hmin / rmax_ : 0, 2 * pc_.contact.roughness);
   if (lub_.model != LubModel::None) lubGap_ = lub_.activation * rmax_;
   // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
-  const double halo = 2 * rmax_ * (1 + law_.roughness()) + lubGap_ + skin_;
+  // Also every sphere that reaches into the subdomain with its penalization mask.
+  const double halo = std::max(2 * rmax_ * (1 + law_.roughness()) + lubGap_ + skin_, rmax_ + pc_.maskSupport);
   exchange_ = std::make_unique<ParticleExchange>(grid_, halo);
   for (const ParticleRecord& r : all)
     if (exchange_->owns(r.x)) store_.append(r);

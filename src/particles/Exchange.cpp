@@ -43,7 +43,7 @@ void putRecord(std::vector<char>& b, const ParticleRecord& r)
 {
   put(b, r.id); put(b, r.radius); put(b, r.density); put(b, r.flags);
   put(b, r.x); put(b, r.v); put(b, r.w); put(b, r.force); put(b, r.torque); put(b, r.fhyd); put(b, r.thyd);
-  put(b, r.vHalf); put(b, r.wHalf);
+  put(b, r.vHalf); put(b, r.wHalf); put(b, r.fluidMomentum); put(b, r.fluidAngularMomentum);
   put(b, r.q); put(b, r.wallSpring);
   put(b, static_cast<std::uint32_t>(r.history.size()));
   for (const ContactSpring& c : r.history) put(b, c);
@@ -54,7 +54,8 @@ ParticleRecord getRecord(const char*& p)
   ParticleRecord r;
   r.id = get<std::int64_t>(p); r.radius = get<double>(p); r.density = get<double>(p); r.flags = get<std::uint8_t>(p);
   r.x = get<Vec3>(p); r.v = get<Vec3>(p); r.w = get<Vec3>(p); r.force = get<Vec3>(p); r.torque = get<Vec3>(p);
-  r.fhyd = get<Vec3>(p); r.thyd = get<Vec3>(p); r.vHalf = get<Vec3>(p); r.wHalf = get<Vec3>(p); r.q = get<Quaternion>(p);
+  r.fhyd = get<Vec3>(p); r.thyd = get<Vec3>(p); r.vHalf = get<Vec3>(p); r.wHalf = get<Vec3>(p);
+  r.fluidMomentum = get<Vec3>(p); r.fluidAngularMomentum = get<Vec3>(p); r.q = get<Quaternion>(p);
   r.wallSpring = get<std::array<Vec3, 6>>(p);
   const auto n = get<std::uint32_t>(p);
   r.history.resize(n);
@@ -276,6 +277,26 @@ void ParticleExchange::updateGhosts(ParticleStore& s)
       const GhostState st = get<GhostState>(p);
       s.x[g] = st.x; s.v[g] = st.v; s.w[g] = st.w; s.q[g] = st.q;
     }
+  }
+}
+
+void ParticleExchange::reduceToOwners(const ParticleStore& s, std::vector<double>& values, int width)
+{
+  // Ghosts received in direction k came from the neighbour opposite k: send their values back in
+  // direction 26 - k; the owner gets them in recv[26 - k], in the order of ghostSend_[k].
+  const std::size_t bytes = width * sizeof(double);
+  std::size_t g = s.nOwned;
+  for (int k = 0; k < 27; ++k) {
+    sendBuf_[26 - k].assign(reinterpret_cast<const char*>(values.data() + width * g),
+                            reinterpret_cast<const char*>(values.data() + width * (g + ghostRecv_[k])));
+    g += ghostRecv_[k];
+  }
+  for (int k = 0; k < 27; ++k) recvBuf_[26 - k].resize(ghostSend_[k].size() * bytes);
+  exchange(sendBuf_, recvBuf_, true);
+  for (int k = 0; k < 27; ++k) {
+    const double* p = reinterpret_cast<const double*>(recvBuf_[26 - k].data());
+    for (std::size_t i : ghostSend_[k])
+      for (int m = 0; m < width; ++m) values[width * i + m] += *p++;
   }
 }
 

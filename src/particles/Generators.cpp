@@ -292,10 +292,15 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
     r.v = pc.single.velocity;
     r.w = pc.single.angularVelocity;
     r.flags = pc.single.fixed ? kFixed : 0;
-    if (pc.single.fixed) r.v = r.w = Vec3{};
+    if (pc.single.fixed) r.v = Vec3{};  // held in place; a given spin is kept (prescribed rotation)
     p.push_back(r);
     option = "-particle_position";
   }
+  if (pc.allFixed)
+    for (ParticleRecord& r : p) {
+      r.flags |= kFixed;
+      r.v = Vec3{};
+    }
   validateParticles(p, c, pc.maxOverlap, option);
   return p;
 }

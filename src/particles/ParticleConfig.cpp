@@ -82,8 +82,11 @@ PetscErrorCode registerOptions(MPI_Comm comm, ParticleConfig& c, Raw& raw)
     PetscCall(vec3Option("-particle_velocity", "Its velocity (m/s)", c.single.velocity, &set));
     PetscCall(vec3Option("-particle_angular_velocity", "Its angular velocity (rad/s)", c.single.angularVelocity, &set));
     PetscBool fixed = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particle_fixed", "Hold the particle fixed", "", fixed, &fixed, nullptr));
+    PetscCall(PetscOptionsBool("-particle_fixed", "Hold the particle in place (its angular velocity is kept: prescribed rotation)", "", fixed, &fixed, nullptr));
     c.single.fixed = fixed;
+    PetscBool all = PETSC_FALSE;
+    PetscCall(PetscOptionsBool("-particles_fixed", "Hold every particle in place (hydrodynamic forces still measured)", "", all, &all, nullptr));
+    c.allFixed = all;
     PetscCall(PetscOptionsReal("-particle_radius", "Radius of the single particle and of generated ones (m)", "", c.radius, &c.radius, nullptr));
     PetscCall(PetscOptionsReal("-particle_density", "Density of the single particle and of generated ones (kg/m^3)", "", c.density, &c.density, nullptr));
     PetscCall(PetscOptionsReal("-particles_max_overlap", "Largest overlap accepted in the initial particles (fraction of the mean diameter; settled packings overlap slightly)", "", c.maxOverlap, &c.maxOverlap, nullptr));

@@ -23,6 +23,8 @@ void ParticleStore::resize(std::size_t n)
   xRebuild.resize(n);
   vHalf.resize(n);
   wHalf.resize(n);
+  fluidMomentum.resize(n);
+  fluidAngularMomentum.resize(n);
   wallSpring.resize(n);
   wallTouch.resize(n);
   history.resize(n);
@@ -52,6 +54,8 @@ void ParticleStore::append(const ParticleRecord& r)
   xRebuild[i] = r.x;
   vHalf[i] = r.vHalf;
   wHalf[i] = r.wHalf;
+  fluidMomentum[i] = r.fluidMomentum;
+  fluidAngularMomentum[i] = r.fluidAngularMomentum;
   wallSpring[i] = r.wallSpring;
   wallTouch[i] = 0;
   for (int f = 0; f < 6; ++f)
@@ -76,6 +80,8 @@ ParticleRecord ParticleStore::record(std::size_t i) const
   r.thyd = thyd[i];
   r.vHalf = vHalf[i];
   r.wHalf = wHalf[i];
+  r.fluidMomentum = fluidMomentum[i];
+  r.fluidAngularMomentum = fluidAngularMomentum[i];
   r.wallSpring = wallSpring[i];
   r.history = history[i];
   return r;
@@ -91,7 +97,8 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
       mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i];
       x[k] = x[i]; v[k] = v[i]; w[k] = w[i]; q[k] = q[i];
       force[k] = force[i]; torque[k] = torque[i]; fhyd[k] = fhyd[i]; thyd[k] = thyd[i];
-      xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i]; wallSpring[k] = wallSpring[i]; wallTouch[k] = wallTouch[i]; history[k] = std::move(history[i]);
+      xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i];
+      fluidMomentum[k] = fluidMomentum[i]; fluidAngularMomentum[k] = fluidAngularMomentum[i]; wallSpring[k] = wallSpring[i]; wallTouch[k] = wallTouch[i]; history[k] = std::move(history[i]);
     }
     ++k;
   }

@@ -91,3 +91,14 @@ vp_bad_input(lub_needs_saturation 1 "option -lub_saturation: must be in \\(0, -l
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1)
 vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(valid: none, blcm, llcm\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model stokes)
+
+# --- Particles in a fluid (coupling) ----------------------------------------------------------
+set(VP_ONE_SPHERE -particle_position 0.5,0.5,0.5 -particle_radius 0.1 -contact_tc 0.01)
+vp_bad_input(penalization_mask 1 "option -penalization_mask: unknown value 'box' \\(valid: smooth, sharp\\)"
+             ${VP_ONE_SPHERE} -penalization_mask box)
+vp_bad_input(penalization_lambda 1 "option -penalization_lambda: must be >= 0" ${VP_ONE_SPHERE} -penalization_lambda -1)
+vp_bad_input(penalization_width 1 "option -penalization_width: must be in \\(0, 4\\] cells, got 9" ${VP_ONE_SPHERE} -penalization_width 9)
+# The falling sphere, coarse and short, on 2 ranks: outputs (fields with chi, particles) and values.
+vp_case_run(falling_sphere 2 --expect kinetic_energy=1.128669797e-05:1e-6
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 20
+            -output_every 10 -monitor_every 0)

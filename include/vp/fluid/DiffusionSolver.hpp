@@ -18,8 +18,9 @@ public:
   DiffusionSolver(const DiffusionSolver&) = delete;
   DiffusionSolver& operator=(const DiffusionSolver&) = delete;
 
-  // Solves (I - a L) du = r for du (initial guess zero). Returns iterations.
-  int solve(double a, Vec r, Vec du, double atol);
+  // Solves (I + theta - a L) du = r for du (initial guess zero); theta (>= 0 per face, e.g. the
+  // implicit penalization chi lambda dt) may be null. Returns iterations.
+  int solve(double a, Vec r, Vec du, double atol, Vec theta = nullptr);
 
   Mat scaledLaplacian() const { return SL_; }  // S L
   Vec weights() const { return S_; }           // S
@@ -29,7 +30,7 @@ private:
 
   const Grid& grid_;
   Mat SL_ = nullptr, A_ = nullptr;
-  Vec S_ = nullptr, rhs_ = nullptr;
+  Vec S_ = nullptr, rhs_ = nullptr, diag_ = nullptr;
   KSP ksp_ = nullptr;
   double a_ = -1;
   bool userAtol_ = false;

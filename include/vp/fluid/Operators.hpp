@@ -2,6 +2,7 @@
 // Discrete operators of the MAC scheme as pure functions on DMDA arrays. Inputs are local
 // (ghosted, boundary ghosts filled) arrays; outputs are written at the owned entries only, in
 // global index space. Face unknowns fixed by a wall (isFixedFace) are never written.
+#include "vp/core/Vec3.hpp"
 #include "vp/grid/Grid.hpp"
 
 namespace vp::ops {
@@ -23,6 +24,7 @@ struct FieldStats {
   double maxDivergence = 0;  // max |div u| over cells (1/s)
   double kineticEnergy = 0;  // sum over faces 0.5 u_c^2 dV (per unit density, m^5/s^2)
   double maxRate = 0;        // max_c max |u_c| / h_c (1/s), the CFL rate
+  Vec3 meanVelocity;         // volume average of u over the domain (m/s): the superficial velocity
 };
 // Global statistics of a local face array (collective).
 FieldStats stats(const Grid& grid, PetscScalar**** u);

@@ -24,8 +24,13 @@ public:
   Projection& operator=(const Projection&) = delete;
 
   // Advances u and p by dt (predictor, diffusion, pressure projection). Call finishStep() after
-  // any further change of u (penalization) to refresh ghosts and statistics.
+  // it to refresh ghosts and statistics.
   StepStats step(double dt);
+  // The two halves of step(): the predictor u* (convection, diffusion, old pressure gradient and,
+  // when given, the implicit penalization theta (u_s - u*), theta = chi lambda dt, thetaUs =
+  // theta u_s) and the projection of u* (returns the pressure iterations).
+  StepStats predict(double dt, Vec theta = nullptr, Vec thetaUs = nullptr);
+  int project(double dt);
   // Imposes the boundary values on u (fixed wall faces) after it was set from outside, e.g. an
   // initial condition, then refreshes ghosts and statistics.
   void applyBoundaryConditions();

@@ -39,6 +39,10 @@ public:
   DemDiagnostics diagnostics() const;
   // A stable DEM step: the shortest contact duration / 50 (collective).
   double suggestedStep() const;
+  ParticleExchange& exchange() { return *exchange_; }
+  // Collective: ghosts get the owners' current x, v, omega, q (the last sub-step sends predicted
+  // velocities); the fluid coupling builds its mask from them.
+  void syncGhosts() { exchange_->updateGhosts(store_); }
   const ContactLaw& law() const { return law_; }
   std::size_t rebuilds() const { return rebuilds_; }
 

@@ -30,6 +30,9 @@ public:
   void createGhosts(ParticleStore& s);
   // Collective. Same ghosts as the last createGhosts(), new kinematics.
   void updateGhosts(ParticleStore& s);
+  // Collective. The reverse of updateGhosts: values[width * g + m] of every ghost g is sent back
+  // to the particle it copies and added to its owner's entry (hydrodynamic partial sums).
+  void reduceToOwners(const ParticleStore& s, std::vector<double>& values, int width);
 
 private:
   using Buffers = std::array<std::vector<char>, 27>;

@@ -59,8 +59,10 @@ struct ParticleConfig {
   double radius = 1e-3;       // -particle_radius [m] (single particle, lattice/random default)
   double density = 2500;      // -particle_density [kg/m^3] (single, lattice, random)
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
+  bool allFixed = false;      // -particles_fixed: every particle held in place (forces still measured)
   ContactConfig contact;
   LubricationParams lubrication; // -lub_*: completed by DemSolver (activation and saturation defaults)
+  double maskSupport = 0;     // set by the coupling: how far beyond a radius the mask reaches [m]
   int substeps = 1;           // -dem_substeps per fluid step
   double skin = 0.1;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
   bool trackAll = false;      // -track_particles all

@@ -19,6 +19,7 @@ struct ParticleRecord {
   std::uint8_t flags = 0;
   Vec3 x, v, w, force, torque, fhyd, thyd;
   Vec3 vHalf, wHalf;                  // a particle may migrate inside a sub-step
+  Vec3 fluidMomentum, fluidAngularMomentum; // of the fluid inside the particle, last fluid step
   Quaternion q;
   std::array<Vec3, 6> wallSpring{};   // tangential springs against the six walls
   ContactHistory history;             // springs against other particles
@@ -38,6 +39,9 @@ struct ParticleStore {
   // hydrodynamic force/torque of the current fluid step, springs and position at the last rebuild.
   std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
   std::vector<Vec3> vHalf, wHalf;   // mid-step velocities inside a DEM sub-step
+  // Momentum and angular momentum (about the centre) of the fluid inside the particle at the last
+  // fluid step: their rate of change is part of the hydrodynamic force (coupling/HydroForce).
+  std::vector<Vec3> fluidMomentum, fluidAngularMomentum;
   std::vector<std::array<Vec3, 6>> wallSpring;
   std::vector<std::uint8_t> wallTouch;   // bit f: wallSpring[f] may be non-zero (derived on append)
   std::vector<ContactHistory> history;

@@ -1,0 +1,188 @@
+#include "vp/coupling/Penalization.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/grid/Boundary.hpp"
+#include <algorithm>
+#include <cmath>
+#include <petscsys.h>
+
+namespace vp {
+
+namespace {
+
+PetscErrorCode registerOptions(MPI_Comm comm, PenalizationConfig& c, char* mask, size_t len)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, nullptr, "Volume penalization of the particles", "vpsolve");
+  PetscCall(PetscOptionsString("-penalization_mask", "Mask of a sphere on the faces: smooth, sharp", "", mask, mask, len, nullptr));
+  PetscCall(PetscOptionsReal("-penalization_lambda", "Penalization coefficient lambda (1/s); 0: 400 nu / h^2", "", c.lambda, &c.lambda, nullptr));
+  PetscCall(PetscOptionsReal("-penalization_width", "Width of the smooth mask (cells)", "", c.width, &c.width, nullptr));
+  PetscOptionsEnd();
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PenalizationConfig PenalizationConfig::fromOptions(MPI_Comm comm)
+{
+  PenalizationConfig c;
+  char mask[32] = "smooth";
+  VP_CALL(registerOptions(comm, c, mask, sizeof mask));
+  const std::string m = mask;
+  if (m == "smooth") c.mask = Mask::Smooth;
+  else if (m == "sharp") c.mask = Mask::Sharp;
+  else throw InputError("option -penalization_mask: unknown value '" + m + "' (valid: smooth, sharp)");
+  if (!(c.lambda >= 0) || !std::isfinite(c.lambda))
+    throw InputError("option -penalization_lambda: must be >= 0 (0: from the grid), got " + std::to_string(c.lambda));
+  if (!(c.width > 0 && c.width <= 4))
+    throw InputError("option -penalization_width: must be in (0, 4] cells, got " + std::to_string(c.width));
+  return c;
+}
+
+Penalization::Penalization(const Grid& grid, const PenalizationConfig& cfg, double rho, double nu)
+  : grid_(grid), cfg_(cfg), rho_(rho)
+{
+  const double h = std::min({grid.h(0), grid.h(1), grid.h(2)});
+  lambda_ = cfg.lambda > 0 ? cfg.lambda : 400 * nu / (h * h);
+  support_ = cfg.mask == PenalizationConfig::Mask::Smooth ? 0.5 * cfg.width * h : 0;
+  VP_CALL(DMCreateGlobalVector(grid.faceDM(), &chi_));
+  VP_CALL(DMCreateGlobalVector(grid.faceDM(), &us_));
+  VP_CALL(DMCreateGlobalVector(grid.faceDM(), &theta_));
+  VP_CALL(DMCreateGlobalVector(grid.faceDM(), &thetaUs_));
+  VP_CALL(PetscObjectSetName((PetscObject)chi_, "chi"));
+}
+
+Penalization::~Penalization()
+{
+  VecDestroy(&thetaUs_);
+  VecDestroy(&theta_);
+  VecDestroy(&us_);
+  VecDestroy(&chi_);
+}
+
+void Penalization::build(const ParticleStore& s, double dt)
+{
+  const Grid& g = grid_;
+  VP_CALL(VecSet(chi_, 0));
+  VP_CALL(VecSet(us_, 0));
+  PetscScalar ****chi, ****us;
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), chi_, &chi));
+  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), us_, &us));
+  const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
+  owner_.assign(3 * nx * ny * (g.end(2) - g.start(2)), -1);
+  const double eps = support_;
+  for (std::size_t p = 0; p < s.size(); ++p) {
+    const Vec3 X = s.x[p];
+    const double a = s.radius[p], reach = a + eps;
+    for (int c = 0; c < 3; ++c) {
+      // Owned faces of component c within reach of the centre (face c sits at index i along c).
+      PetscInt lo[3], hi[3];
+      for (int d = 0; d < 3; ++d) {
+        const double off = d == c ? 0 : 0.5;
+        lo[d] = std::max<PetscInt>(g.start(d), PetscInt(std::ceil((X[d] - reach - g.lo(d)) / g.h(d) - off)));
+        hi[d] = std::min<PetscInt>(g.end(d), PetscInt(std::floor((X[d] + reach - g.lo(d)) / g.h(d) - off)) + 1);
+      }
+      for (PetscInt k = lo[2]; k < hi[2]; ++k)
+        for (PetscInt j = lo[1]; j < hi[1]; ++j)
+          for (PetscInt i = lo[0]; i < hi[0]; ++i) {
+            Vec3 x{g.cellCentre(0, i), g.cellCentre(1, j), g.cellCentre(2, k)};
+            const PetscInt q[3] = {i, j, k};
+            x[c] = g.faceCoord(c, q[c]);
+            const Vec3 r = x - X;
+            const double phi = a - norm(r);  // > 0 inside
+            double value;
+            if (eps == 0) value = phi > 0 ? 1 : 0;
+            else if (phi <= -eps) value = 0;
+            else if (phi >= eps) value = 1;
+            else value = 0.5 * (1 + phi / eps + std::sin(M_PI * phi / eps) / M_PI);
+            if (value <= chi[k][j][i][c]) continue;
+            chi[k][j][i][c] = value;
+            us[k][j][i][c] = (s.v[p] + cross(s.w[p], r))[c];
+            owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c] = static_cast<int>(p);
+          }
+    }
+  }
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), us_, &us));
+  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), chi_, &chi));
+  VP_CALL(VecCopy(chi_, theta_));
+  VP_CALL(VecScale(theta_, lambda_ * dt));
+  {
+    // A wall face keeps its boundary value: no penalization there.
+    PetscScalar**** t;
+    VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), theta_, &t));
+    for (int c = 0; c < 3; ++c) {
+      if (!g.atLow(c)) continue;
+      PetscInt lo[3] = {g.start(0), g.start(1), g.start(2)}, hi[3] = {g.end(0), g.end(1), g.end(2)};
+      hi[c] = 1;
+      for (PetscInt k = lo[2]; k < hi[2]; ++k)
+        for (PetscInt j = lo[1]; j < hi[1]; ++j)
+          for (PetscInt i = lo[0]; i < hi[0]; ++i) t[k][j][i][c] = 0;
+    }
+    VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), theta_, &t));
+  }
+  VP_CALL(VecPointwiseMult(thetaUs_, theta_, us_));
+}
+
+// Visits every owned, free face covered by a particle: f(i, j, k, c, p, r, chi), r = face - centre.
+template <class F>
+void Penalization::forCovered(const ParticleStore& s, F&& f) const
+{
+  const Grid& g = grid_;
+  PetscScalar**** chi;
+  VP_CALL(DMDAVecGetArrayDOFRead(g.faceDM(), chi_, &chi));
+  const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
+  for (PetscInt k = g.start(2); k < g.end(2); ++k)
+    for (PetscInt j = g.start(1); j < g.end(1); ++j)
+      for (PetscInt i = g.start(0); i < g.end(0); ++i) {
+        const PetscInt q[3] = {i, j, k};
+        for (int c = 0; c < 3; ++c) {
+          const int p = owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c];
+          if (p < 0 || isFixedFace(g, c, q[c])) continue;
+          Vec3 x{g.cellCentre(0, i), g.cellCentre(1, j), g.cellCentre(2, k)};
+          x[c] = g.faceCoord(c, q[c]);
+          f(i, j, k, c, p, x - s.x[p], chi[k][j][i][c]);
+        }
+      }
+  VP_CALL(DMDAVecRestoreArrayDOFRead(g.faceDM(), chi_, &chi));
+}
+
+void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const
+{
+  sums.assign(kHydroSums * s.size(), 0.0);
+  const double dV = grid_.cellVolume();
+  PetscScalar ****a, ****us;
+  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), uStar, &a));
+  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), us_, &us));
+  forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
+    // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
+    Vec3 f;
+    f[c] = rho_ * chi * lambda_ * (a[k][j][i][c] - us[k][j][i][c]) * dV;
+    const Vec3 t = cross(r, f);
+    double* sum = &sums[kHydroSums * p];
+    for (int m = 0; m < 3; ++m) {
+      sum[m] += f[m];
+      sum[3 + m] += t[m];
+    }
+  });
+  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), us_, &us));
+  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), uStar, &a));
+}
+
+void Penalization::addFluidMomentum(const ParticleStore& s, Vec u, std::vector<double>& sums) const
+{
+  const double dV = grid_.cellVolume();
+  PetscScalar**** a;
+  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), u, &a));
+  forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
+    Vec3 momentum;
+    momentum[c] = rho_ * chi * a[k][j][i][c] * dV;
+    const Vec3 moment = cross(r, momentum);
+    double* sum = &sums[kHydroSums * p];
+    for (int m = 0; m < 3; ++m) {
+      sum[6 + m] += momentum[m];
+      sum[9 + m] += moment[m];
+    }
+  });
+  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), u, &a));
+}
+
+} // namespace vp

@@ -1,0 +1,124 @@
+// Particles in a fluid (volume penalization): drag of a fixed sphere array against Hasimoto, and
+// the same falling-sphere trajectory on any number of ranks.
+#include "vp/Simulation.hpp"
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace vp;
+
+namespace {
+
+// Particle and solver options for one Simulation (they are read from the options database),
+// removed again on destruction.
+struct ScopedOptions {
+  explicit ScopedOptions(std::vector<std::pair<std::string, std::string>> o) : opts(std::move(o))
+  {
+    for (auto& [k, v] : opts) PetscOptionsSetValue(nullptr, k.c_str(), v.empty() ? nullptr : v.c_str());
+  }
+  ~ScopedOptions()
+  {
+    for (auto& [k, v] : opts) PetscOptionsClearValue(nullptr, k.c_str());
+  }
+  std::vector<std::pair<std::string, std::string>> opts;
+};
+
+bool allRanks(MPI_Comm comm, bool ok)
+{
+  int in = ok ? 1 : 0, out;
+  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_MIN, comm);
+  return out == 1;
+}
+
+// Force and state of particle 0 on every rank (from its owner).
+std::vector<double> particleState(MPI_Comm comm, Simulation& sim)
+{
+  std::vector<double> mine(9, 0.0), all(9);
+  const ParticleStore& s = sim.particles()->particles();
+  for (std::size_t i = 0; i < s.nOwned; ++i)
+    if (s.id[i] == 0)
+      for (int d = 0; d < 3; ++d) {
+        mine[d] = s.x[i][d];
+        mine[3 + d] = s.v[i][d];
+        mine[6 + d] = s.fhyd[i][d];
+      }
+  MPI_Allreduce(mine.data(), all.data(), 9, MPI_DOUBLE, MPI_SUM, comm);
+  return all;
+}
+
+Config closedBox(std::array<int, 3> n, std::array<double, 3> hi)
+{
+  Config c;
+  c.grid.n = n;
+  c.grid.hi = hi;
+  c.output.files = false;
+  c.output.monitorEvery = 0;
+  return c;
+}
+
+} // namespace
+
+TEST_CASE("Fixed sphere in a periodic box: Stokes drag within 3 % of Hasimoto at d/dx = 8", "[mpi][coupling]")
+{
+  // d = 1 in a box of 4: c = (pi/6)/64 = 0.00818; K = 1/(1 - 1.7601 c^(1/3) + c - 1.5593 c^2).
+  Config c = closedBox({32, 32, 32}, {4, 4, 4});
+  for (auto& t : c.bc.type) t = BcType::Periodic;
+  c.fluid.rho = 1;
+  c.fluid.mu = 1;
+  c.fluid.bodyForce = {0.01, 0, 0};
+  c.time.dt = 0.5;
+  ScopedOptions o({{"-particle_position", "2,2,2"}, {"-particle_radius", "0.5"}, {"-particle_density", "2"},
+                   {"-particle_fixed", ""}, {"-contact_tc", "1"}});
+  Simulation sim(PETSC_COMM_WORLD, c);
+  for (int k = 0; k < 120; ++k) sim.advance(c.time.dt);
+  const double F = particleState(PETSC_COMM_WORLD, sim)[6];
+  const double U = sim.fluid().stats().meanVelocity.x;
+  const double conc = M_PI / 6 / 64, K = F / (6 * M_PI * 1 * 0.5 * U);
+  const double hasimoto = 1 / (1 - 1.7601 * std::cbrt(conc) + conc - 1.5593 * conc * conc);
+  INFO("F = " << F << " (driving force 0.64), U = " << U << ", K = " << K << " vs Hasimoto " << hasimoto);
+  // At steady state the sphere carries the whole driving force rho f L^3.
+  CHECK(std::fabs(F / 0.64 - 1) <= 1e-3);
+  CHECK(std::fabs(K / hasimoto - 1) <= 0.03);
+}
+
+TEST_CASE("A sphere falling across subdomain boundaries: the same trajectory on 1, 2 and 3 ranks", "[mpi][coupling]")
+{
+  int size, rank;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  Config c = closedBox({16, 16, 24}, {0.08, 0.08, 0.12});
+  c.fluid.rho = 985;
+  c.fluid.mu = 0.142;
+  c.gravity = {0, 0, -9.781};
+  c.time.dt = 0.004;
+  // Off-centre, so that it straddles the subdomain boundaries of every decomposition.
+  ScopedOptions o({{"-particle_position", "0.041,0.039,0.062"}, {"-particle_radius", "0.01"},
+                   {"-particle_density", "1127"}, {"-particle_angular_velocity", "1,2,3"}, {"-contact_tc", "0.04"},
+                   {"-dem_substeps", "4"}, {"-pressure_ksp_rtol", "1e-13"}, {"-velocity_ksp_rtol", "1e-13"}});
+  std::vector<std::vector<double>> runs;
+  for (int s = 1; s <= size; ++s) {
+    MPI_Comm sub;
+    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
+    if (sub != MPI_COMM_NULL) {
+      Simulation sim(sub, c);
+      for (int k = 0; k < 25; ++k) sim.advance(c.time.dt);
+      runs.push_back(particleState(sub, sim));
+      MPI_Comm_free(&sub);
+    }
+  }
+  bool ok = true;
+  if (rank == 0) {
+    INFO("1 rank: z = " << runs[0][2] << ", w = " << runs[0][5] << ", F_z = " << runs[0][8]);
+    CHECK(runs[0][5] < -0.01);  // it is falling
+    for (std::size_t s = 1; s < runs.size(); ++s)
+      for (int m = 0; m < 9; ++m) {
+        const double scale = m < 3 ? 0.1 : (m < 6 ? std::fabs(runs[0][5]) : std::fabs(runs[0][8]));
+        INFO("ranks " << s + 1 << ", entry " << m << ": " << runs[s][m] << " vs " << runs[0][m]);
+        const bool same = std::fabs(runs[s][m] - runs[0][m]) <= 1e-6 * scale;
+        ok = ok && same;
+        CHECK(same);
+      }
+  }
+  REQUIRE(allRanks(PETSC_COMM_WORLD, ok));
+}
