@@ -188,9 +188,16 @@ void Simulation::monitor(double dt) const
   const double perStep = elapsed / std::max(step_, 1);
   const double byTime = time_ > 0 ? elapsed / time_ * (cfg_.time.final - time_) : 0;
   const double bySteps = perStep * (cfg_.time.maxSteps - step_);
+  const std::string eta = hms(std::min(byTime, bySteps));
+  if (cfg_.fluid.off) {
+    const DemDiagnostics d = dem_->diagnostics();
+    PetscPrintf(grid_.comm(), "step %6d  t %.4e  dt %.3e  particle KE %.4e J  contacts %ld  wall contacts %ld  %.2e s/step  ETA %s\n",
+                step_, time_, dt, d.kineticEnergy, d.contacts, d.wallContacts, wallLastStep_, eta.c_str());
+    return;
+  }
   PetscPrintf(grid_.comm(), "step %6d  t %.4e  dt %.3e  cfl %.3f  p_its %3d  v_its %3d  max|div u| %.2e  %.3f s/step  ETA %s\n",
               step_, time_, dt, dt * s.maxRate, last_.pressureIterations, last_.velocityIterations, s.maxDivergence,
-              wallLastStep_, hms(std::min(byTime, bySteps)).c_str());
+              wallLastStep_, eta.c_str());
 }
 
 void Simulation::printSetup() const
@@ -212,7 +219,8 @@ void Simulation::printSetup() const
 void Simulation::printSummary() const
 {
   const double wall = MPI_Wtime() - wallStart_;
-  PetscPrintf(grid_.comm(), "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
+  if (!cfg_.fluid.off)
+    PetscPrintf(grid_.comm(), "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
               "mean pressure iterations %.1f; kinetic energy %.6e J\n",
               step_, time_, wall, wall / std::max(step_, 1), wall / std::max(step_, 1) / grid_.cells() * 1e6,
               double(pressureIterationsTotal_) / std::max(step_, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
