@@ -12,17 +12,9 @@ const char* const kFaceNames[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
 const char* const kBcNames[4] = {"wall", "slip", "periodic", "velocity"};
 const char* const kInitNames[4] = {"rest", "taylor_green", "abc", "poiseuille"};
 
-[[noreturn]] void fail(const std::string& option, const std::string& what)
-{
-  throw InputError("option " + option + ": " + what);
-}
+[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
 
-std::string str(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string str(double v) { return formatNumber(v); }
 
 template <size_t N>
 int lookup(const char* const (&names)[N], const std::string& value, const std::string& option)

@@ -1,4 +1,5 @@
 #include "vp/core/Error.hpp"
+#include <sstream>
 
 namespace vp {
 
@@ -6,6 +7,18 @@ PetscFailure::PetscFailure(PetscErrorCode c, const char* file, int line)
   : std::runtime_error("PETSc error " + std::to_string(c) + " at " + file + ":" + std::to_string(line)),
     code(c)
 {
+}
+
+void failOption(const std::string& option, const std::string& what)
+{
+  throw InputError("option " + option + ": " + what);
+}
+
+std::string formatNumber(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
 }
 
 } // namespace vp

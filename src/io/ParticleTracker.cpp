@@ -6,6 +6,25 @@ namespace vp {
 
 namespace {
 
+// Concatenation of every rank's values on rank 0 (empty elsewhere). Collective.
+template <class T>
+std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine, MPI_Datatype type)
+{
+  int size, rank, n = static_cast<int>(mine.size());
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  std::vector<int> counts(size), displs(size);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  int total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[r] = total;
+    total += counts[r];
+  }
+  std::vector<T> all(rank == 0 ? total : 0);
+  MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), displs.data(), type, 0, comm);
+  return all;
+}
+
 const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz\n";
 constexpr int kCols = 20;  // id + 19 values
 
@@ -21,19 +40,8 @@ ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleC
 {
   if (all_) {
     // "all" means the particles present at the start: collect their ids on rank 0.
-    std::vector<std::int64_t> mine(s.id.begin(), s.id.begin() + s.nOwned);
-    int size, rank, n = static_cast<int>(mine.size());
-    MPI_Comm_size(comm_, &size);
-    MPI_Comm_rank(comm_, &rank);
-    std::vector<int> counts(size), displs(size);
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
-    int total = 0;
-    for (int r = 0; r < size; ++r) {
-      displs[r] = total;
-      total += counts[r];
-    }
-    std::vector<std::int64_t> every(total);
-    MPI_Gatherv(mine.data(), n, MPI_INT64_T, every.data(), counts.data(), displs.data(), MPI_INT64_T, 0, comm_);
+    const std::vector<std::int64_t> mine(s.id.begin(), s.id.begin() + s.nOwned);
+    const std::vector<std::int64_t> every = gatherToRoot(comm_, mine, MPI_INT64_T);
     ids_.insert(every.begin(), every.end());
   }
   int rank;
@@ -64,21 +72,12 @@ void ParticleTracker::record(const ParticleStore& s, double time)
       rows.push_back(v.z);
     }
   }
-  int size, rank, n = static_cast<int>(rows.size());
-  MPI_Comm_size(comm_, &size);
+  const std::vector<double> all = gatherToRoot(comm_, rows, MPI_DOUBLE);
+  int rank;
   MPI_Comm_rank(comm_, &rank);
-  std::vector<int> counts(size), displs(size);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
-  int total = 0;
-  for (int r = 0; r < size; ++r) {
-    displs[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> all(rank == 0 ? total : 0);
-  MPI_Gatherv(rows.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm_);
   if (rank != 0) return;
   char line[1024];
-  for (int r = 0; r + kCols <= total; r += kCols) {
+  for (std::size_t r = 0; r + kCols <= all.size(); r += kCols) {
     const double* v = &all[r];
     int len = std::snprintf(line, sizeof line, "%.17g", v[1]);
     for (int c = 2; c < kCols; ++c) len += std::snprintf(line + len, sizeof line - len, ",%.17g", v[c]);

@@ -9,17 +9,9 @@ namespace vp {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& option, const std::string& what)
-{
-  throw InputError("option " + option + ": " + what);
-}
+[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
 
-std::string str(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string str(double v) { return formatNumber(v); }
 
 void requireCount(PetscInt got, PetscInt want, PetscBool set, const char* option, const char* form)
 {

@@ -16,6 +16,11 @@ struct PetscFailure : std::runtime_error {
   PetscErrorCode code;
 };
 
+// Throws InputError("option <option>: <what>").
+[[noreturn]] void failOption(const std::string& option, const std::string& what);
+// A number as the user would write it (for error messages).
+std::string formatNumber(double v);
+
 } // namespace vp
 
 // Call a PETSc function from C++ code that does not return PetscErrorCode: throw on failure.
