@@ -25,8 +25,8 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine, MPI_Datat
   return all;
 }
 
-const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz\n";
-constexpr int kCols = 20;  // id + 19 values
+const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz,thx,thy,thz\n";
+constexpr int kCols = 23;  // id + 22 values
 
 std::string fileName(const std::string& dir, std::int64_t id)
 {
@@ -63,7 +63,7 @@ void ParticleTracker::record(const ParticleStore& s, double time)
   std::vector<double> rows;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (!tracked(s.id[i])) continue;
-    const Vec3 values[6] = {s.x[i], s.v[i], s.w[i], s.fhyd[i], s.force[i], s.torque[i]};
+    const Vec3 values[7] = {s.x[i], s.v[i], s.w[i], s.fhyd[i], s.force[i], s.torque[i], s.thyd[i]};
     rows.push_back(static_cast<double>(s.id[i]));
     rows.push_back(time);
     for (const Vec3& v : values) {
