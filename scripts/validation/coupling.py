@@ -63,6 +63,16 @@ def rotation():
         T = float(part[-1]["thz"])
         ratios.append(-T / (8 * math.pi * mu * a ** 3 * omega))
         print("rotation: d/dx %d  T %.5f  T / (8 pi mu a^3 Omega) %.4f" % (r, T, ratios[-1]), flush=True)
+    fig, ax = plt.subplots(figsize=(5, 4))
+    ax.plot(resolutions, ratios, "o-", label="vpsolve (periodic box 4 d, c = 0.0082)")
+    ax.axhline(1, color="k", ls="--", label="unbounded 8 pi mu a^3 Omega")
+    ax.set_xlabel("d / dx")
+    ax.set_ylabel("T / (8 pi mu a^3 Omega)")
+    ax.set_ylim(0.9, 1.1)
+    ax.set_title("Fixed sphere rotating at Omega, Stokes")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "sphere_rotation_torque.png"), dpi=120)
     return ratios
 
 

@@ -43,9 +43,10 @@ void ParticleStore::append(const ParticleRecord& r)
   invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
   invInertia[i] = (r.flags & kFixed) ? 0 : 1 / (0.4 * m * radius[i] * radius[i]);
   x[i] = r.x;
-  // A fixed particle does not move (the integrator relies on it: zero inverse mass, zero velocity).
+  // A fixed particle stays in place (the integrator relies on it: zero inverse mass and velocity);
+  // its spin is kept, constant: a prescribed rotation.
   v[i] = (r.flags & kFixed) ? Vec3{} : r.v;
-  w[i] = (r.flags & kFixed) ? Vec3{} : r.w;
+  w[i] = r.w;
   q[i] = r.q;
   force[i] = r.force;
   torque[i] = r.torque;
