@@ -84,6 +84,9 @@ double Simulation::nextDt() const
     for (int f = 0; f < 6; ++f)
       for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
     if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
+    // Particles released from rest: a step may not let gravity move them more than cfl cells.
+    const double g = norm(cfg_.gravity);
+    if (dem_ && g > 0) dt = std::min(dt, std::sqrt(2 * cfg_.time.cfl * hmin / g));
   }
   const double left = cfg_.time.final - time_;
   // Land on -time_final exactly instead of leaving a sliver of a step.
