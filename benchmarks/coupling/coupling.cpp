@@ -3,9 +3,7 @@
 // (-particle_position or -particles_lattice). 3 warm-up steps, then -steps timed steps.
 // usage: bench_coupling -n 128 -steps 5 -particles_lattice ... [options]
 // prints: ranks,n,particles,step_s,<stage>_s...
-#include "vp/Simulation.hpp"
-#include "vp/core/Logging.hpp"
-#include <petscsys.h>
+#include "../common/TimedSteps.hpp"
 
 int main(int argc, char** argv)
 {
@@ -23,22 +21,14 @@ int main(int argc, char** argv)
     c.output.monitorEvery = 0;
     PetscOptionsGetReal(nullptr, nullptr, "-time_dt", &c.time.dt, nullptr);
     vp::Simulation sim(PETSC_COMM_WORLD, c);
-    for (int s = 0; s < 3; ++s) sim.advance(sim.nextDt());
-    MPI_Barrier(PETSC_COMM_WORLD);
-    vp::resetStageSeconds();
-    const double t0 = MPI_Wtime();
-    for (int s = 0; s < steps; ++s) sim.advance(sim.nextDt());
-    MPI_Barrier(PETSC_COMM_WORLD);
-    const double total = (MPI_Wtime() - t0) / steps;
+    const double total = vp::bench::timeSteps(sim, 3, int(steps));
     int size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);
     PetscPrintf(PETSC_COMM_WORLD, "%d,%d,%ld,%.4f", size, int(n), sim.particles()->diagnostics().particles, total);
-    for (vp::Stage st : {vp::Stage::Advection, vp::Stage::Diffusion, vp::Stage::Pressure, vp::Stage::Penalization,
-                         vp::Stage::HydroForce, vp::Stage::DEM, vp::Stage::Exchange}) {
-      double mine = vp::stageSeconds(st) / steps, slowest;
-      MPI_Allreduce(&mine, &slowest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
-      PetscPrintf(PETSC_COMM_WORLD, ",%.4f", slowest);
-    }
+    vp::bench::printStages(PETSC_COMM_WORLD,
+                           {vp::Stage::Advection, vp::Stage::Diffusion, vp::Stage::Pressure, vp::Stage::Penalization,
+                            vp::Stage::HydroForce, vp::Stage::DEM, vp::Stage::Exchange},
+                           int(steps));
     PetscPrintf(PETSC_COMM_WORLD, "\n");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_coupling: %s\n", e.what());

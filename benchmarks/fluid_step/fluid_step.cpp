@@ -3,9 +3,7 @@
 // not trivially warm-started).
 // usage: bench_fluid_step -n 128 -warmup 5 -steps 10 [solver options]
 // prints: ranks,n,steps,total_s_per_step,<stage>_s_per_step...,us_per_cell_step
-#include "vp/Simulation.hpp"
-#include "vp/core/Logging.hpp"
-#include <petscsys.h>
+#include "../common/TimedSteps.hpp"
 
 int main(int argc, char** argv)
 {
@@ -24,21 +22,12 @@ int main(int argc, char** argv)
     c.output.files = false;
     c.output.monitorEvery = 0;
     vp::Simulation sim(PETSC_COMM_WORLD, c);
-    for (int s = 0; s < warmup; ++s) sim.advance(sim.nextDt());
-    MPI_Barrier(PETSC_COMM_WORLD);
-    vp::resetStageSeconds();
-    const double t0 = MPI_Wtime();
-    for (int s = 0; s < steps; ++s) sim.advance(sim.nextDt());
-    MPI_Barrier(PETSC_COMM_WORLD);
-    const double total = (MPI_Wtime() - t0) / steps;
+    const double total = vp::bench::timeSteps(sim, int(warmup), int(steps));
     int size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);
     PetscPrintf(PETSC_COMM_WORLD, "%d,%d,%d,%.4f", size, int(n), int(steps), total);
-    for (vp::Stage st : {vp::Stage::Advection, vp::Stage::Diffusion, vp::Stage::Pressure}) {
-      double mine = vp::stageSeconds(st) / steps, slowest;
-      MPI_Allreduce(&mine, &slowest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
-      PetscPrintf(PETSC_COMM_WORLD, ",%.4f", slowest);
-    }
+    vp::bench::printStages(PETSC_COMM_WORLD, {vp::Stage::Advection, vp::Stage::Diffusion, vp::Stage::Pressure},
+                           int(steps));
     PetscPrintf(PETSC_COMM_WORLD, ",%.4f\n", total / sim.grid().cells() * 1e6 * size);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_fluid_step: %s\n", e.what());
