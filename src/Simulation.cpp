@@ -27,9 +27,10 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
   wallStart_ = MPI_Wtime();
   if (cfg_.fluid.off && !particleCfg_.any())
     throw InputError("option -fluid_off: a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+  // Read (and listed by -help) even without particles.
+  const PenalizationConfig penalizationCfg = PenalizationConfig::fromOptions(comm);
   if (particleCfg_.any() && !cfg_.fluid.off) {
-    penalization_ = std::make_unique<Penalization>(grid_, PenalizationConfig::fromOptions(comm), cfg_.fluid.rho,
-                                                   cfg_.fluid.nu());
+    penalization_ = std::make_unique<Penalization>(grid_, penalizationCfg, cfg_.fluid.rho, cfg_.fluid.nu());
     particleCfg_.maskSupport = penalization_->support();
   }
   if (particleCfg_.any()) dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
