@@ -27,35 +27,98 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
   wallStart_ = MPI_Wtime();
   if (cfg_.fluid.off && !particleCfg_.any())
     throw InputError("option -fluid_off: a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+  std::unique_ptr<CheckpointReader> restart;
+  if (!cfg_.checkpoint.restart.empty()) {
+    restart = std::make_unique<CheckpointReader>(comm, cfg_.checkpoint.restart, cfg_);
+    const std::size_t n = restart->particles().size();
+    if ((n > 0) != particleCfg_.any())
+      failOption("-restart", n > 0 ? "the checkpoint holds " + std::to_string(n) + " particles: give the original run's particle options "
+                                     "too (the particles come from the checkpoint, the contact and lubrication options from the command line)"
+                                   : "the checkpoint holds no particles, but particle options are given");
+  }
   // Read (and listed by -help) even without particles.
   const PenalizationConfig penalizationCfg = PenalizationConfig::fromOptions(comm);
   if (particleCfg_.any() && !cfg_.fluid.off) {
     penalization_ = std::make_unique<Penalization>(grid_, penalizationCfg, cfg_.fluid.rho, cfg_.fluid.nu());
     particleCfg_.maskSupport = penalization_->support();
   }
-  if (particleCfg_.any()) dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
+  if (restart && particleCfg_.any())
+    dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restart->particles(), true);
+  else if (particleCfg_.any())
+    dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
   fluid_ = std::make_unique<Projection>(grid_, cfg_);
-  AnalyticFlow flow(cfg_);
-  sampleVelocity(grid_, flow, 0, fluid_->velocity());
-  samplePressure(grid_, flow, 0, fluid_->pressure());
-  fluid_->applyBoundaryConditions();
+  if (restart)
+    restore(*restart);
+  else {
+    AnalyticFlow flow(cfg_);
+    sampleVelocity(grid_, flow, 0, fluid_->velocity());
+    samplePressure(grid_, flow, 0, fluid_->pressure());
+    fluid_->applyBoundaryConditions();
+    nextCheckpointTime_ = cfg_.checkpoint.dt;
+  }
   if (penalization_) {
     buildMask(0);
     hydroSums_.assign(kHydroSums * dem_->particles().size(), 0.0);
-    hydroForce(0);
+    if (!restart) hydroForce(0);  // a restart has the fluid momentum inside each particle
   }
   if (cfg_.output.files) {
     makeOutputDir(comm, cfg_.output.dir);
     fields_ = std::make_unique<FieldWriter>(grid_, cfg_.output.dir);
     std::vector<std::string> columns{"step", "time", "dt", "cfl", "pressure_iterations", "max_divergence",
                                      "kinetic_energy", "wall_time", "velocity_iterations", "mean_u", "mean_v", "mean_w"};
+    // A restart continues the time series after the checkpoint's row (dropping later ones).
+    const double resumeStep = restart ? step_ : -1, resumeTime = restart ? time_ : -1;
     if (dem_) {
       for (const char* c : {"particle_kinetic_energy", "contacts", "wall_contacts"}) columns.push_back(c);
       particleWriter_ = std::make_unique<ParticleWriter>(comm, cfg_.output.dir);
-      tracker_ = std::make_unique<ParticleTracker>(comm, cfg_.output.dir, particleCfg_, dem_->particles());
+      tracker_ = std::make_unique<ParticleTracker>(comm, cfg_.output.dir, particleCfg_, dem_->particles(), resumeTime);
     }
-    diagnostics_ = std::make_unique<CsvWriter>(comm, cfg_.output.dir + "/diagnostics.csv", columns);
+    diagnostics_ = std::make_unique<CsvWriter>(comm, cfg_.output.dir + "/diagnostics.csv", columns, resumeStep);
+    if (restart) {
+      fields_->resume(restart->run().fieldSnapshots);
+      if (particleWriter_) particleWriter_->resume(restart->run().particleSnapshots);
+    }
+    if (cfg_.checkpoint.on()) checkpoints_ = std::make_unique<CheckpointWriter>(comm, cfg_.output.dir, cfg_.checkpoint.keep);
   }
+  firstStep_ = step_;
+  firstTime_ = time_;
+}
+
+void Simulation::restore(const CheckpointReader& cp)
+{
+  const RunState& r = cp.run();
+  cp.loadFluid({fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()});
+  fluid_->setPreviousDt(r.dtOld);
+  fluid_->finishStep();
+  step_ = r.step;
+  time_ = r.time;
+  nextOutputTime_ = r.nextOutputTime;
+  lastOutputStep_ = r.lastOutputStep;
+  // A run that did not checkpoint by time before starts counting from here.
+  nextCheckpointTime_ = r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt;
+  lastCheckpointStep_ = step_;
+  PetscPrintf(grid_.comm(), "vpsolve: restart from %s at step %d, t = %.6g s\n", cfg_.checkpoint.restart.c_str(), step_, time_);
+}
+
+void Simulation::checkpoint()
+{
+  if (!checkpoints_) return;
+  StageScope stage(Stage::IO);
+  if (tracker_) tracker_->flush();  // the time series hold every row up to the checkpoint
+  if (cfg_.checkpoint.dt > 0)
+    while (nextCheckpointTime_ <= time_ * (1 + 1e-12)) nextCheckpointTime_ += cfg_.checkpoint.dt;
+  RunState r;
+  r.step = step_;
+  r.time = time_;
+  r.dtOld = fluid_->previousDt();
+  r.nextOutputTime = nextOutputTime_;
+  r.nextCheckpointTime = nextCheckpointTime_;
+  r.lastOutputStep = lastOutputStep_;
+  if (fields_) r.fieldSnapshots = fields_->snapshotList();
+  if (particleWriter_) r.particleSnapshots = particleWriter_->snapshotList();
+  checkpoints_->write(grid_, cfg_.bc, r, {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()},
+                      dem_ ? dem_->ownedRecords() : std::vector<ParticleRecord>{});
+  lastCheckpointStep_ = step_;
 }
 
 Simulation::~Simulation() = default;
@@ -142,8 +205,9 @@ void Simulation::run()
 {
   printSetup();
   const bool snapshots = cfg_.output.every > 0 || cfg_.output.dt > 0;
-  if (snapshots) output();
-  if (tracker_) tracker_->record(dem_->particles(), time_);
+  // A restart has written the snapshot and the tracker rows of its first step already.
+  if (snapshots && lastOutputStep_ != step_) output();
+  if (tracker_ && step_ == 0) tracker_->record(dem_->particles(), time_);
   const double loopStart = MPI_Wtime();
   while (time_ < cfg_.time.final * (1 - 1e-12) && step_ < cfg_.time.maxSteps) {
     const double dt = nextDt();
@@ -166,9 +230,13 @@ void Simulation::run()
     const bool due = (cfg_.output.every > 0 && step_ % cfg_.output.every == 0) ||
                      (cfg_.output.dt > 0 && time_ >= nextOutputTime_ * (1 - 1e-12));
     if (due) output();
+    const bool checkpointDue = (cfg_.checkpoint.every > 0 && step_ % cfg_.checkpoint.every == 0) ||
+                               (cfg_.checkpoint.dt > 0 && time_ >= nextCheckpointTime_ * (1 - 1e-12));
+    if (checkpointDue) checkpoint();
   }
   loopWall_ = MPI_Wtime() - loopStart;
   if (snapshots && lastOutputStep_ != step_) output();
+  if (lastCheckpointStep_ != step_) checkpoint();  // the end state, to continue the run later
   if (tracker_) tracker_->flush();
   printSummary();
 }
@@ -189,8 +257,8 @@ void Simulation::monitor(double dt) const
 {
   const auto& s = fluid_->stats();
   const double elapsed = MPI_Wtime() - wallStart_;
-  const double perStep = elapsed / std::max(step_, 1);
-  const double byTime = time_ > 0 ? elapsed / time_ * (cfg_.time.final - time_) : 0;
+  const double perStep = elapsed / std::max(step_ - firstStep_, 1);
+  const double byTime = time_ > firstTime_ ? elapsed / (time_ - firstTime_) * (cfg_.time.final - time_) : 0;
   const double bySteps = perStep * (cfg_.time.maxSteps - step_);
   const std::string eta = hms(std::min(byTime, bySteps));
   if (cfg_.fluid.off) {
@@ -223,17 +291,18 @@ void Simulation::printSetup() const
 void Simulation::printSummary() const
 {
   const double wall = MPI_Wtime() - wallStart_;
+  const int steps = step_ - firstStep_;  // of this run (a restart continues the count)
   if (!cfg_.fluid.off)
     PetscPrintf(grid_.comm(), "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
               "mean pressure iterations %.1f; kinetic energy %.6e J\n",
-              step_, time_, wall, wall / std::max(step_, 1), wall / std::max(step_, 1) / grid_.cells() * 1e6,
-              double(pressureIterationsTotal_) / std::max(step_, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
+              steps, time_, wall, wall / std::max(steps, 1), wall / std::max(steps, 1) / grid_.cells() * 1e6,
+              double(pressureIterationsTotal_) / std::max(steps, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
   if (dem_) {
     const DemDiagnostics d = dem_->diagnostics();
-    const double particleSteps = double(d.particles) * step_ * particleCfg_.substeps;
+    const double particleSteps = double(d.particles) * steps * particleCfg_.substeps;
     PetscPrintf(grid_.comm(), "vpsolve: DEM %ld particles, %d x %d sub-steps, loop time %.3f s, %.4g particle-steps/s, "
                 "%zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
-                d.particles, step_, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
+                d.particles, steps, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
                 d.kineticEnergy);
   }
 }

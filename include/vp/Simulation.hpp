@@ -6,6 +6,7 @@
 #include "vp/coupling/Penalization.hpp"
 #include "vp/fluid/Projection.hpp"
 #include "vp/grid/Grid.hpp"
+#include "vp/io/Checkpoint.hpp"
 #include "vp/io/CsvWriter.hpp"
 #include "vp/io/FieldWriter.hpp"
 #include "vp/io/ParticleTracker.hpp"
@@ -34,6 +35,9 @@ public:
 
 private:
   void output();
+  void checkpoint();  // checkpoint_<step>.h5 (ARCHITECTURE.md 9)
+  // Continues from -restart: fluid state, particles, counters, output lists.
+  void restore(const CheckpointReader& cp);
   // The penalization force on each particle from the predicted velocity, and the hydrodynamic
   // forces once the velocity is projected (dt = 0: only the fluid momentum, initial state).
   void penalize();
@@ -55,9 +59,12 @@ private:
   std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
   std::unique_ptr<ParticleTracker> tracker_;
+  std::unique_ptr<CheckpointWriter> checkpoints_;
   double loopWall_ = 0;                            // wall time of the stepping loop
-  double time_ = 0, nextOutputTime_ = 0;
-  int step_ = 0, lastOutputStep_ = -1;
+  double time_ = 0, nextOutputTime_ = 0, nextCheckpointTime_ = 0;
+  int step_ = 0, lastOutputStep_ = -1, lastCheckpointStep_ = -1;
+  int firstStep_ = 0;       // step and time this run started from (0 unless restarted)
+  double firstTime_ = 0;
   StepStats last_;
   double wallStart_ = 0, wallLastStep_ = 0;
   long pressureIterationsTotal_ = 0;

@@ -3,7 +3,10 @@
   hasimoto: fixed sphere array, Stokes drag K vs Hasimoto at d/dx = 8, 12, 16 (24 with --fine)
   rotation: fixed sphere rotating at Omega in a periodic box, torque vs 8 pi mu a^3 Omega
   falling:  the seed's falling sphere at d/dx = 8, 12 (16 with --fine), u(t) vs Schiller-Naumann
-usage: coupling.py [hasimoto|rotation|falling|all] [--fine]"""
+  width:    the same at d/dx = 8 in boxes 8, 12 and 16 d wide; and in a 12 d x 12 d x 10 d box at
+            d/dx = 8 (and 16 with --fine): wall effect and terminal speed
+usage: coupling.py [hasimoto|rotation|falling|width|all] [--fine] [--reuse]
+  --reuse: keep the runs already in /tmp/vp_val_* that reached their end time (re-plot only)"""
 import csv, math, os, subprocess, sys
 import matplotlib
 matplotlib.use("Agg")
@@ -15,13 +18,19 @@ vpsolve = os.path.join(root, "build", "vpsolve")
 outdir = os.path.join(root, "docs", "validation")
 os.makedirs(outdir, exist_ok=True)
 fine = "--fine" in sys.argv
+reuse = "--reuse" in sys.argv
+SN, CLIFT = 0.1462, 0.1418  # terminal speeds from Schiller-Naumann and the Clift-Grace-Weber drag curve
 
 
 def run(case, out, *opts):
+    rows = lambda f: list(csv.DictReader(open(os.path.join(out, f))))
+    final = [o for k, o in zip(opts, opts[1:]) if k == "-time_final"]
+    if reuse and os.path.exists(os.path.join(out, "particle_0.csv")) and final and \
+            float(rows("diagnostics.csv")[-1]["time"]) >= float(final[0]) * (1 - 1e-9):
+        return rows("diagnostics.csv"), rows("particle_0.csv")
     cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", os.path.join(root, "cases", case), "-output_dir", out,
            "-monitor_every", "0", "-output_every", "0", "-output_dt", "0"] + [str(o) for o in opts]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, cwd=root)
-    rows = lambda f: list(csv.DictReader(open(os.path.join(out, f))))
     return rows("diagnostics.csv"), rows("particle_0.csv")
 
 
@@ -37,6 +46,25 @@ def hasimoto():
         print("hasimoto: d/dx %d  F %.5f  U %.6f  K %.4f" % (r, F, U, ks[-1]), flush=True)
     c = math.pi / 6 / 64
     kh = 1 / (1 - 1.7601 * c ** (1 / 3) + c - 1.5593 * c * c)
+    if len(ks) == 4:
+        # Observed order from the three finest grids (unequal ratios): solve
+        # (K2 - K1) / (K3 - K2) = (h1^p - h2^p) / (h2^p - h3^p) for p by bisection, if monotone.
+        (r1, r2, r3), (k1, k2, k3) = resolutions[1:], ks[1:]
+        q = (k2 - k1) / (k3 - k2) if k3 != k2 else float("inf")
+        f = lambda p: (r1 ** -p - r2 ** -p) / (r2 ** -p - r3 ** -p) - q
+        if q > 0 and f(0.1) * f(6) < 0:
+            lo, hi = 0.1, 6.0
+            for _ in range(100):
+                mid = (lo + hi) / 2
+                lo, hi = (mid, hi) if f(lo) * f(mid) > 0 else (lo, mid)
+            p = (lo + hi) / 2
+            kinf = k3 - (k2 - k3) * r3 ** -p / (r2 ** -p - r3 ** -p)  # Richardson: K_h = K + C h^p
+            print("hasimoto: observed order %.2f from d/dx %d, %d, %d; extrapolated K %.4f (%+.2f %% vs Hasimoto)" %
+                  (p, r1, r2, r3, kinf, 100 * (kinf / kh - 1)), flush=True)
+        else:
+            print("hasimoto: the differences K(%d) - K(%d) = %+.4f and K(%d) - K(%d) = %+.4f change sign or vanish: "
+                  "no observed order (converged to the level of the remaining oscillation)" % (r2, r1, k2 - k1, r3, r2, k3 - k2),
+                  flush=True)
     fig, ax = plt.subplots(figsize=(5, 4))
     ax.plot(resolutions, ks, "o-", label="vpsolve")
     ax.axhline(kh, color="k", ls="--", label="Hasimoto %.3f" % kh)
@@ -88,13 +116,56 @@ def falling():
         w = [-float(p["vz"]) for p in part]
         ax.plot(t, w, label="d/dx = %d (max %.4f m/s)" % (r, max(w)))
         print("falling: d/dx %d  max fall speed %.4f m/s (%+.1f %% vs 0.1462)" % (r, max(w), 100 * (max(w) / 0.1462 - 1)), flush=True)
-    ax.axhline(0.1462, color="k", ls="--", label="Schiller-Naumann 0.1462 m/s")
+    ax.axhline(SN, color="k", ls="--", label="Schiller-Naumann %.4f m/s" % SN)
+    ax.axhline(CLIFT, color="k", ls=":", label="Clift-Grace-Weber drag curve %.4f m/s" % CLIFT)
     ax.set_xlabel("t (s)")
     ax.set_ylabel("fall speed (m/s)")
     ax.set_title("Seed falling sphere (rho_p/rho = 1.14, Re 25.7)")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "falling_sphere_velocity.png"), dpi=120)
+
+
+def fall_speed(part, t0, t1):
+    """Mean fall speed over [t0, t1] (the terminal plateau, before the bottom wall is felt)."""
+    w = [-float(p["vz"]) for p in part if t0 <= float(p["time"]) <= t1]
+    return sum(w) / len(w)
+
+
+def width():
+    d = 0.0254
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
+    # d/dx 8, 12 d tall, released 10 d above the bottom: boxes 8, 12 and 16 d wide.
+    for wd in (8, 12, 16):
+        n, L = 8 * wd, wd * d
+        diag, part = run("falling_sphere.opts", "/tmp/vp_val_width_%d" % wd, "-grid_n", "%d,%d,96" % (n, n),
+                         "-grid_hi", "%g,%g,0.3048" % (L, L), "-particle_position", "%g,%g,0.254" % (L / 2, L / 2),
+                         "-time_dt", 0.004, "-time_final", 1.9)
+        u = fall_speed(part, 1.2, 1.7)
+        print("width: %2d d box, d/dx 8: mean fall speed over t = 1.2-1.7 s %.4f m/s (%+.1f %% vs SN, %+.1f %% vs Clift)"
+              % (wd, u, 100 * (u / SN - 1), 100 * (u / CLIFT - 1)), flush=True)
+        a1.plot([float(p["time"]) for p in part], [-float(p["vz"]) for p in part], label="%d d wide: %.4f m/s" % (wd, u))
+    a1.set_title("d/dx = 8, box 12 d tall, width varied")
+    # 12 d x 12 d x 10 d, released 8.5 d above the bottom: d/dx 8 and 16.
+    for r in [8] + ([16] if fine else []):
+        diag, part = run("falling_sphere.opts", "/tmp/vp_val_wide_%d" % r, "-grid_n", "%d,%d,%d" % (12 * r, 12 * r, 10 * r),
+                         "-grid_hi", "0.3048,0.3048,0.254", "-particle_position", "0.1524,0.1524,0.2159",
+                         "-time_dt", 0.004, "-time_final", 1.5, *(["-checkpoint_every", 50] if r > 8 else []))
+        u = fall_speed(part, 1.0, 1.4)
+        print("width: 12 d box, d/dx %d: mean fall speed over t = 1.0-1.4 s %.4f m/s (%+.1f %% vs SN, %+.1f %% vs Clift)"
+              % (r, u, 100 * (u / SN - 1), 100 * (u / CLIFT - 1)), flush=True)
+        a2.plot([float(p["time"]) for p in part], [-float(p["vz"]) for p in part], label="d/dx = %d: %.4f m/s" % (r, u))
+    a2.set_title("12 d x 12 d x 10 d box, grid varied")
+    for ax in (a1, a2):
+        ax.axhline(SN, color="k", ls="--", lw=1, label="Schiller-Naumann %.4f" % SN)
+        ax.axhline(CLIFT, color="k", ls=":", lw=1, label="Clift-Grace-Weber %.4f" % CLIFT)
+        ax.axhspan(0.95 * SN, 1.05 * SN, color="0.9", zorder=0)
+        ax.set_xlabel("t (s)")
+        ax.legend(fontsize=7, loc="lower right")
+    a1.set_ylabel("fall speed (m/s); legend: mean over the plateau")
+    a1.set_ylim(0.08, 0.16)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "falling_sphere_box.png"), dpi=120)
 
 
 what = [a for a in sys.argv[1:] if not a.startswith("--")] or ["all"]
@@ -104,3 +175,5 @@ if what[0] in ("rotation", "all"):
     rotation()
 if what[0] in ("falling", "all"):
     falling()
+if what[0] in ("width", "all"):
+    width()

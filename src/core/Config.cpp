@@ -31,11 +31,22 @@ void readVec3(PetscReal (&a)[3], PetscInt n, PetscBool set, const char* option)
   if (set && n != 3) fail(option, "needs 3 comma-separated values, got " + std::to_string(n));
 }
 
+// An int option inside an options block (PetscInt may be wider than int).
+PetscErrorCode optionInt(PetscOptionItems* PetscOptionsObject, const char* name, const char* help, int& value)
+{
+  PetscInt v = value;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsInt(name, help, "", v, &v, nullptr));
+  value = static_cast<int>(v);
+  PetscFunctionReturn(0);
+}
+
 // The options blocks; strings are returned raw and parsed in fromOptions for clear messages.
 struct Raw {
   char bc[6][64];
   char init[64];
   char dir[PETSC_MAX_PATH_LEN];
+  char restart[PETSC_MAX_PATH_LEN];
 };
 
 PetscErrorCode registerOptions(MPI_Comm comm, Config& c, Raw& raw)
@@ -103,11 +114,7 @@ PetscErrorCode registerOptions(MPI_Comm comm, Config& c, Raw& raw)
 
   PetscOptionsBegin(comm, nullptr, "Time stepping", "vpsolve");
   PetscCall(PetscOptionsReal("-time_final", "End time (s)", "", c.time.final, &c.time.final, nullptr));
-  {
-    PetscInt steps = c.time.maxSteps;
-    PetscCall(PetscOptionsInt("-time_max_steps", "Maximum number of fluid steps", "", steps, &steps, nullptr));
-    c.time.maxSteps = steps;
-  }
+  PetscCall(optionInt(PetscOptionsObject, "-time_max_steps", "Maximum number of fluid steps", c.time.maxSteps));
   PetscCall(PetscOptionsReal("-time_cfl", "Target CFL number, dt = cfl * min(h / |u_max|)", "", c.time.cfl, &c.time.cfl, nullptr));
   PetscCall(PetscOptionsReal("-time_dt_max", "Largest time step (s); 0: min(h)^2 / nu", "", c.time.dtMax, &c.time.dtMax, nullptr));
   PetscCall(PetscOptionsReal("-time_dt", "Fixed time step (s); 0: CFL-adaptive", "", c.time.dt, &c.time.dt, nullptr));
@@ -117,12 +124,20 @@ PetscErrorCode registerOptions(MPI_Comm comm, Config& c, Raw& raw)
   {
     PetscCall(PetscStrcpy(raw.dir, c.output.dir.c_str()));
     PetscCall(PetscOptionsString("-output_dir", "Directory for fields, particles, diagnostics", "", raw.dir, raw.dir, sizeof raw.dir, nullptr));
-    PetscInt every = c.output.every, mon = c.output.monitorEvery;
-    PetscCall(PetscOptionsInt("-output_every", "Steps between field snapshots (0: none)", "", every, &every, nullptr));
+    PetscCall(optionInt(PetscOptionsObject, "-output_every", "Steps between field snapshots (0: none)", c.output.every));
     PetscCall(PetscOptionsReal("-output_dt", "Simulated time between field snapshots (s; 0: none)", "", c.output.dt, &c.output.dt, nullptr));
-    PetscCall(PetscOptionsInt("-monitor_every", "Steps between progress lines (0: none)", "", mon, &mon, nullptr));
-    c.output.every = every;
-    c.output.monitorEvery = mon;
+    PetscCall(optionInt(PetscOptionsObject, "-monitor_every", "Steps between progress lines (0: none)", c.output.monitorEvery));
+  }
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(comm, nullptr, "Checkpoint/restart", "vpsolve");
+  {
+    PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint (checkpoint_<step>.h5 or checkpoint_latest.h5); "
+                                 "particles come from it, grid and boundaries must match", "", raw.restart, raw.restart,
+                                 sizeof raw.restart, nullptr));
+    PetscCall(optionInt(PetscOptionsObject, "-checkpoint_every", "Steps between checkpoints (0: none)", c.checkpoint.every));
+    PetscCall(PetscOptionsReal("-checkpoint_dt", "Simulated time between checkpoints (s; 0: none)", "", c.checkpoint.dt, &c.checkpoint.dt, nullptr));
+    PetscCall(optionInt(PetscOptionsObject, "-checkpoint_keep", "Checkpoints of this run kept on disk, newest first", c.checkpoint.keep));
   }
   PetscOptionsEnd();
   PetscFunctionReturn(0);
@@ -141,6 +156,7 @@ Config Config::fromOptions(MPI_Comm comm)
     c.bc.type[f] = static_cast<BcType>(lookup(kBcNames, raw.bc[f], std::string("-bc_") + kFaceNames[f]));
   c.fluid.init = static_cast<InitFlow>(lookup(kInitNames, raw.init, "-init_flow"));
   c.output.dir = raw.dir;
+  c.checkpoint.restart = raw.restart;
   c.validate();
   return c;
 }
@@ -177,6 +193,9 @@ void Config::validate() const
   if (!(output.dt >= 0)) fail("-output_dt", "must be >= 0 (0: no snapshots), got " + str(output.dt));
   if (output.monitorEvery < 0) fail("-monitor_every", "must be >= 0, got " + std::to_string(output.monitorEvery));
   if (output.dir.empty()) fail("-output_dir", "must not be empty");
+  if (checkpoint.every < 0) fail("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
+  if (!(checkpoint.dt >= 0)) fail("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + str(checkpoint.dt));
+  if (checkpoint.keep < 1) fail("-checkpoint_keep", "must be >= 1, got " + std::to_string(checkpoint.keep));
   if (fluid.init == InitFlow::TaylorGreen || fluid.init == InitFlow::Abc) {
     bool needZ = fluid.init == InitFlow::Abc;
     if (!bc.periodic(0) || !bc.periodic(1) || (needZ && !bc.periodic(2)))

@@ -1,14 +1,44 @@
 #include "vp/io/CsvWriter.hpp"
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 
 namespace vp {
 
-CsvWriter::CsvWriter(MPI_Comm comm, const std::string& path, const std::vector<std::string>& columns)
+bool keepRowsUpTo(const std::string& path, double last)
+{
+  std::ifstream in(path);
+  if (!in) return false;
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    std::string line;
+    if (std::getline(in, line)) out << line << '\n';  // header
+    const double limit = last + 1e-9 * std::fabs(last);
+    while (std::getline(in, line)) {
+      char* end = nullptr;
+      const double key = std::strtod(line.c_str(), &end);
+      if (end == line.c_str() || key > limit) break;
+      out << line << '\n';
+    }
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot replace " + path);
+  return true;
+}
+
+CsvWriter::CsvWriter(MPI_Comm comm, const std::string& path, const std::vector<std::string>& columns, double resumeAfter)
   : columns_(columns.size())
 {
   int rank;
   MPI_Comm_rank(comm, &rank);
   if (rank != 0) return;
+  if (resumeAfter >= 0 && keepRowsUpTo(path, resumeAfter)) {
+    file_ = std::fopen(path.c_str(), "a");
+    if (!file_) throw std::runtime_error("cannot append to " + path);
+    return;
+  }
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("cannot write " + path);
   for (size_t i = 0; i < columns.size(); ++i) std::fprintf(file_, "%s%s", i ? "," : "", columns[i].c_str());

@@ -1,10 +1,10 @@
 #include "vp/io/FieldWriter.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/fluid/Operators.hpp"
+#include "vp/io/Hdf5.hpp"
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <hdf5.h>
 #include <petscviewerhdf5.h>
 
 namespace vp {
@@ -16,15 +16,6 @@ std::string fieldFile(int step)
   char name[64];
   std::snprintf(name, sizeof name, "fields_%06d.h5", step);
   return name;
-}
-
-void writeAttribute(hid_t loc, const char* name, const double* v, hsize_t n)
-{
-  hid_t space = H5Screate_simple(1, &n, nullptr);
-  hid_t attr = H5Acreate2(loc, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, v);
-  H5Aclose(attr);
-  H5Sclose(space);
 }
 
 } // namespace
@@ -104,16 +95,32 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure, 
     const double origin[3] = {grid_.lo(0), grid_.lo(1), grid_.lo(2)};
     const double spacing[3] = {grid_.h(0), grid_.h(1), grid_.h(2)};
     const double stepValue = step;
-    writeAttribute(root, "time", &time, 1);
-    writeAttribute(root, "step", &stepValue, 1);
-    writeAttribute(root, "origin", origin, 3);
-    writeAttribute(root, "spacing", spacing, 3);
+    h5::writeAttribute(root, "time", &time, 1, true);
+    h5::writeAttribute(root, "step", &stepValue, 1, true);
+    h5::writeAttribute(root, "origin", origin, 3, true);
+    h5::writeAttribute(root, "spacing", spacing, 3, true);
     H5Gclose(root);
     H5Fclose(file);
     snapshots_.emplace_back(step, time);
     writeXdmf(chi != nullptr);
   }
   MPI_Barrier(grid_.comm());
+}
+
+std::vector<double> FieldWriter::snapshotList() const
+{
+  std::vector<double> out;
+  for (const auto& [step, time] : snapshots_) out.insert(out.end(), {double(step), time});
+  return out;
+}
+
+void FieldWriter::resume(const std::vector<double>& list)
+{
+  snapshots_.clear();
+  for (std::size_t k = 0; k + 1 < list.size(); k += 2) {
+    const int step = static_cast<int>(list[k]);
+    if (std::filesystem::exists(dir_ + "/" + fieldFile(step))) snapshots_.emplace_back(step, list[k + 1]);
+  }
 }
 
 void FieldWriter::writeXdmf(bool chi) const

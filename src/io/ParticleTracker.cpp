@@ -1,4 +1,5 @@
 #include "vp/io/ParticleTracker.hpp"
+#include "vp/io/CsvWriter.hpp"
 #include <cstdio>
 #include <vector>
 
@@ -35,7 +36,8 @@ std::string fileName(const std::string& dir, std::int64_t id)
 
 } // namespace
 
-ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s)
+ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s,
+                                 double resumeAfter)
   : comm_(comm), dir_(std::move(dir)), all_(pc.trackAll), ids_(pc.track.begin(), pc.track.end())
 {
   if (all_) {
@@ -48,6 +50,7 @@ ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleC
   MPI_Comm_rank(comm_, &rank);
   if (rank != 0) return;
   for (std::int64_t id : ids_) {
+    if (resumeAfter >= 0 && keepRowsUpTo(fileName(dir_, id), resumeAfter)) continue;
     if (FILE* f = std::fopen(fileName(dir_, id).c_str(), "w")) {
       std::fputs(kHeader, f);
       std::fclose(f);

@@ -1,8 +1,9 @@
 #include "vp/io/ParticleWriter.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/io/Hdf5.hpp"
+#include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <hdf5.h>
 #include <stdexcept>
 
 namespace vp {
@@ -14,31 +15,6 @@ std::string snapshotName(int step)
   char name[64];
   std::snprintf(name, sizeof name, "particles_%06d.h5", step);
   return name;
-}
-
-// Writes this rank's rows [offset, offset + n) of a global N x cols dataset, collectively.
-void writeRows(hid_t file, const char* name, hid_t type, const void* data, hsize_t total, hsize_t offset, hsize_t n,
-               hsize_t cols)
-{
-  const int rank = cols > 1 ? 2 : 1;
-  hsize_t dims[2] = {total, cols}, start[2] = {offset, 0}, count[2] = {n, cols};
-  hid_t fspace = H5Screate_simple(rank, dims, nullptr);
-  hid_t ds = H5Dcreate2(file, name, type, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  hid_t mspace = H5Screate_simple(rank, count, nullptr);
-  if (n > 0)
-    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, count, nullptr);
-  else {
-    H5Sselect_none(fspace);
-    H5Sselect_none(mspace);
-  }
-  hid_t xfer = H5Pcreate(H5P_DATASET_XFER);
-  H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE);
-  const herr_t err = H5Dwrite(ds, type, mspace, fspace, xfer, data);
-  H5Pclose(xfer);
-  H5Sclose(mspace);
-  H5Dclose(ds);
-  H5Sclose(fspace);
-  if (err < 0) throw std::runtime_error(std::string("HDF5: cannot write dataset ") + name);
 }
 
 } // namespace
@@ -79,22 +55,34 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
   H5Pclose(fapl);
   if (file < 0) throw std::runtime_error("cannot create " + path);
   const hsize_t T = total, o = offset, m = n;
-  writeRows(file, "id", H5T_NATIVE_INT64, s.id.data(), T, o, m, 1);
-  writeRows(file, "radius", H5T_NATIVE_DOUBLE, radius.data(), T, o, m, 1);
-  writeRows(file, "position", H5T_NATIVE_DOUBLE, pos.data(), T, o, m, 3);
-  writeRows(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), T, o, m, 3);
-  writeRows(file, "angular_velocity", H5T_NATIVE_DOUBLE, omega.data(), T, o, m, 3);
-  writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T, o, m, 3);
-  writeRows(file, "orientation", H5T_NATIVE_DOUBLE, orient.data(), T, o, m, 4);
-  hid_t aspace = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, aspace, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
-  H5Aclose(attr);
-  H5Sclose(aspace);
+  h5::writeRows(file, "id", H5T_NATIVE_INT64, s.id.data(), T, o, m, 1);
+  h5::writeRows(file, "radius", H5T_NATIVE_DOUBLE, radius.data(), T, o, m, 1);
+  h5::writeRows(file, "position", H5T_NATIVE_DOUBLE, pos.data(), T, o, m, 3);
+  h5::writeRows(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), T, o, m, 3);
+  h5::writeRows(file, "angular_velocity", H5T_NATIVE_DOUBLE, omega.data(), T, o, m, 3);
+  h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T, o, m, 3);
+  h5::writeRows(file, "orientation", H5T_NATIVE_DOUBLE, orient.data(), T, o, m, 4);
+  h5::writeAttribute(file, "time", &time, 1);
   H5Fclose(file);
 
   snapshots_.push_back({step, time, total});
   if (rank == 0) writeXdmf();
+}
+
+std::vector<double> ParticleWriter::snapshotList() const
+{
+  std::vector<double> out;
+  for (const Snapshot& s : snapshots_) out.insert(out.end(), {double(s.step), s.time, double(s.count)});
+  return out;
+}
+
+void ParticleWriter::resume(const std::vector<double>& list)
+{
+  snapshots_.clear();
+  for (std::size_t k = 0; k + 2 < list.size(); k += 3) {
+    const int step = static_cast<int>(list[k]);
+    if (std::ifstream(dir_ + "/" + snapshotName(step))) snapshots_.push_back({step, list[k + 1], std::lround(list[k + 2])});
+  }
 }
 
 void ParticleWriter::writeXdmf() const

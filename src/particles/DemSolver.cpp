@@ -23,7 +23,8 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 {
 }
 
-DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all)
+DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
+                     bool restart)
   : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), gravity_(c.gravity),
     walls_(domainWalls(c)), hydro_(!c.fluid.off)
 {
@@ -33,10 +34,10 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
     const double far = walls_[f].active ? walls_[f].position : (f % 2 ? HUGE_VAL : -HUGE_VAL);
     (f % 2 ? wallHi_ : wallLo_)[f / 2] = far;
   }
-  setUp(all);
+  setUp(all, restart);
 }
 
-void DemSolver::setUp(const std::vector<ParticleRecord>& all)
+void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
 {
   for (const ParticleRecord& r : all) rmax_ = std::max(rmax_, r.radius);
   if (rmax_ == 0) rmax_ = pc_.radius;
@@ -54,7 +55,21 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
   rebuild();
-  computeForces(0);  // initial forces; zero step: springs keep their state
+  // Initial forces (zero step: springs keep their state). A restart has those of the last
+  // sub-step, computed from the predicted velocities: recomputing them would change the run.
+  if (!restart) computeForces(0);
+}
+
+std::vector<ParticleRecord> DemSolver::ownedRecords()
+{
+  // Between rebuilds the springs live in the pair list; lend them to the histories.
+  pairs_.exportHistory(store_);
+  std::vector<ParticleRecord> out;
+  for (std::size_t i = 0; i < store_.nOwned; ++i) {
+    out.push_back(store_.record(i));
+    store_.history[i].clear();
+  }
+  return out;
 }
 
 bool DemSolver::needRebuild() const
@@ -74,7 +89,7 @@ void DemSolver::rebuild()
 {
   StageScope stage(Stage::Exchange);
   ParticleStore& s = store_;
-  for (std::size_t i = 0; i < s.nOwned; ++i) s.history[i].clear();
+  // The histories are empty between rebuilds (restart: they hold the checkpoint's springs).
   pairs_.exportHistory(s);
   exchange_->migrate(s);
   exchange_->createGhosts(s);

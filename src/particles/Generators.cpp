@@ -1,10 +1,10 @@
 #include "vp/particles/Generators.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/io/Hdf5.hpp"
 #include "vp/particles/CellBuckets.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <hdf5.h>
 #include <random>
 #include <sstream>
 #include <unordered_set>
@@ -109,36 +109,22 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
 
 std::vector<ParticleRecord> readParticleHdf5(const std::string& path)
 {
-  H5E_auto2_t func;
-  void* data;
-  H5Eget_auto2(H5E_DEFAULT, &func, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // report our own message instead of HDF5's trace
+  h5::QuietErrors quiet;  // report our own message instead of HDF5's trace
   hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   std::vector<std::vector<double>> col(12);
   std::string error;
   if (file < 0) error = "cannot open '" + path + "' as HDF5";
   for (int c = 0; c < 12 && error.empty(); ++c) {
-    hid_t ds = H5Dopen2(file, kParticleColumns[c], H5P_DEFAULT);
-    if (ds < 0) {
+    hsize_t rows = 0, cols = 0;
+    error = h5::readTable(file, kParticleColumns[c], col[c], rows, cols);
+    if (error.rfind("lacks", 0) == 0)
       error = "'" + path + "' lacks the dataset " + kParticleColumns[c] + " (needs 1-D datasets id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)";
-      break;
-    }
-    hid_t sp = H5Dget_space(ds);
-    hsize_t dims[2] = {0, 0};
-    const int rank = H5Sget_simple_extent_ndims(sp);
-    H5Sget_simple_extent_dims(sp, dims, nullptr);
-    if (rank != 1 || (c > 0 && dims[0] != col[0].size()))
+    else if (!error.empty())
+      error = "'" + path + "' " + error;
+    else if (cols != 1 || (c > 0 && rows != col[0].size()))
       error = "'" + path + "' dataset " + kParticleColumns[c] + " must be 1-D with one value per particle";
-    else {
-      col[c].resize(dims[0]);
-      if (dims[0] > 0 && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, col[c].data()) < 0)
-        error = "'" + path + "' dataset " + kParticleColumns[c] + " cannot be read as numbers";
-    }
-    H5Sclose(sp);
-    H5Dclose(ds);
   }
   if (file >= 0) H5Fclose(file);
-  H5Eset_auto2(H5E_DEFAULT, func, data);
   if (!error.empty()) fail("-particles_file", error);
   std::vector<ParticleRecord> out;
   for (std::size_t i = 0; i < col[0].size(); ++i) {

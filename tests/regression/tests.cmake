@@ -102,3 +102,24 @@ vp_bad_input(penalization_width 1 "option -penalization_width: must be in \\(0, 
 vp_case_run(falling_sphere 2 --expect kinetic_energy=1.128669797e-05:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 20
             -output_every 10 -monitor_every 0)
+
+# --- Checkpoint/restart -------------------------------------------------------------------------
+set(VP_CHECK_RESTART /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py)
+function(vp_restart name np)
+  add_test(NAME restart_${name} COMMAND ${VP_CHECK_RESTART} --np ${np} --dir ${CMAKE_CURRENT_BINARY_DIR}/restart_${name} ${ARGN})
+  set_tests_properties(restart_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS ${np})
+endfunction()
+# DEM with 2000 spheres in contact (7500 friction springs): bitwise the uninterrupted run, also when
+# written on 2 ranks and continued on 3.
+vp_restart(dem_collapse 2 --restart-np 3 --steps 400 --at 200 --tol 0
+           -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/granular_collapse_dry.opts
+           -particles_file ${PROJECT_SOURCE_DIR}/cases/data/column_2000.csv)
+# The coupled falling sphere: bitwise on the same rank count; on another to the solver tolerance.
+set(VP_FALL_COARSE $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24)
+vp_restart(falling_sphere 2 --restart-np 2 --steps 20 --at 10 --tol 0 -- ${VP_FALL_COARSE})
+vp_restart(falling_sphere_3_ranks 2 --restart-np 3 --steps 20 --at 10 --tol 1e-6
+           --compare kinetic_energy,cfl,x,y,z,vx,vy,vz,fx,fy,fz,fcx,fcy,fcz -- ${VP_FALL_COARSE})
+vp_bad_input(checkpoint_every 1 "option -checkpoint_every: must be >= 0 \\(0: no checkpoints\\), got -5" -checkpoint_every -5)
+vp_bad_input(checkpoint_keep 1 "option -checkpoint_keep: must be >= 1, got 0" -checkpoint_keep 0)
+vp_bad_input(restart_not_checkpoint 1 "option -restart: '.*taylor_green.opts' is not an HDF5 file"
+             -restart ${VP_CASES}/taylor_green.opts)

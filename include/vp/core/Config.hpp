@@ -54,6 +54,15 @@ struct OutputConfig {
   bool files = true;                       // false: no files at all (library use in tests)
 };
 
+// Checkpoint/restart (ARCHITECTURE.md 9, docs/outputs.md).
+struct CheckpointConfig {
+  std::string restart;                     // -restart: continue from this checkpoint file
+  int every = 0;                           // steps between checkpoints (0: none)
+  double dt = 0;                           // simulated time between checkpoints (0: none)
+  int keep = 2;                            // checkpoints of this run kept on disk (older ones deleted)
+  bool on() const { return every > 0 || dt > 0; }
+};
+
 struct Config {
   Vec3 gravity{};                          // on particles; on the fluid it is hydrostatic
   GridConfig grid;
@@ -61,6 +70,7 @@ struct Config {
   FluidConfig fluid;
   TimeConfig time;
   OutputConfig output;
+  CheckpointConfig checkpoint;
 
   // Reads and validates all options (collective; throws InputError on bad input).
   static Config fromOptions(MPI_Comm comm);

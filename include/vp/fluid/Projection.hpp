@@ -42,6 +42,12 @@ public:
   Vec pressure() const { return p_; }      // cellDM global
   Vec velocityLocal() const { return uL_; } // faceDM local, ghosts valid after finishStep()
   const Grid& grid() const { return grid_; }
+  // The rest of the state an exact continuation needs (checkpoints): the last step's convection
+  // term and length (variable-step AB2) and the last pressure increment (the next solve's start).
+  Vec convectionOld() const { return Nold_; }
+  Vec pressureIncrement() const { return psi_; }
+  double previousDt() const { return dtOld_; }
+  void setPreviousDt(double dt) { dtOld_ = dt; }
   PressureSolver& pressureSolver() { return pressure_; }
   DiffusionSolver& diffusionSolver() { return diffusion_; }
 

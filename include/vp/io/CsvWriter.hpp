@@ -8,9 +8,16 @@
 
 namespace vp {
 
+// For a restart: keeps the header and the rows whose first column is <= last (relative 1e-9),
+// dropping the rows a longer or crashed run wrote after the checkpoint (rewritten through a
+// temporary file). False if there is no such file. Rank 0 only.
+bool keepRowsUpTo(const std::string& path, double last);
+
 class CsvWriter {
 public:
-  CsvWriter(MPI_Comm comm, const std::string& path, const std::vector<std::string>& columns);
+  // resumeAfter (a restart): continue the file after the row with this first column, if it exists.
+  CsvWriter(MPI_Comm comm, const std::string& path, const std::vector<std::string>& columns,
+            double resumeAfter = -1);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;

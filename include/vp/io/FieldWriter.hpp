@@ -21,6 +21,11 @@ public:
   // chi: the particles' mask on the faces (faceDM global vector), or null without particles.
   void write(int step, double time, Vec velocityLocal, Vec pressure, Vec chi = nullptr);
 
+  // The snapshots so far as (step, time) pairs (rank 0, which writes fields.xmf), and their
+  // restoration on a restart: those whose files are in the output directory stay in fields.xmf.
+  std::vector<double> snapshotList() const;
+  void resume(const std::vector<double>& list);
+
 private:
   void writeXdmf(bool chi) const;
 

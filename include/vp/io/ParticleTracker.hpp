@@ -14,8 +14,10 @@ namespace vp {
 
 class ParticleTracker {
 public:
-  // Starts the files afresh (header only).
-  ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s);
+  // Starts the files afresh (header only); resumeAfter >= 0 (a restart): continues existing files
+  // after the row of that time.
+  ParticleTracker(MPI_Comm comm, std::string dir, const ParticleConfig& pc, const ParticleStore& s,
+                  double resumeAfter = -1);
   ~ParticleTracker();
   ParticleTracker(const ParticleTracker&) = delete;
   ParticleTracker& operator=(const ParticleTracker&) = delete;

@@ -16,6 +16,11 @@ public:
   // Collective.
   void write(const ParticleStore& s, int step, double time);
 
+  // The snapshots so far as (step, time, count) triples, and their restoration on a restart
+  // (those whose files are in the output directory).
+  std::vector<double> snapshotList() const;
+  void resume(const std::vector<double>& list);
+
 private:
   struct Snapshot {
     int step;

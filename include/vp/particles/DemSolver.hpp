@@ -27,12 +27,16 @@ class DemSolver {
 public:
   // Particles from the options (-particles_file, generators, single particle).
   DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc);
-  // Particles given as one global list, identical on every rank (tests, restart).
-  DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all);
+  // Particles given as one global list, identical on every rank (tests, restart). restart: the
+  // records carry the forces of their last sub-step and their contact springs: keep them.
+  DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
+            bool restart = false);
 
   // One fluid step [t, t + dt]: -dem_substeps sub-steps. Collective.
   void advance(double t, double dt);
 
+  // This rank's particles with their contact springs (for a checkpoint).
+  std::vector<ParticleRecord> ownedRecords();
   ParticleStore& particles() { return store_; }
   const ParticleStore& particles() const { return store_; }
   // Collective: global sums over owned particles.
@@ -47,7 +51,7 @@ public:
   std::size_t rebuilds() const { return rebuilds_; }
 
 private:
-  void setUp(const std::vector<ParticleRecord>& all);
+  void setUp(const std::vector<ParticleRecord>& all, bool restart);
   void substep(double dt);
   template <bool Hydro>
   void substep(double dt);

@@ -1,0 +1,284 @@
+#include "vp/io/Checkpoint.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/io/Hdf5.hpp"
+#include <cstdio>
+#include <map>
+#include <tuple>
+#include <petscviewerhdf5.h>
+#include <unistd.h>
+
+namespace vp {
+
+namespace {
+
+const char* const kFormat = "vpsolve checkpoint";
+constexpr int kVersion = 1;
+// One row per particle; wall springs (6 x 3) follow these 35 columns.
+const char* const kParticleColumns =
+  "id,radius,density,flags,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz,fhx,fhy,fhz,thx,thy,thz,"
+  "pfx,pfy,pfz,lfx,lfy,lfz,wall_spring[6][3]";
+constexpr int kParticleCols = 35 + 18;
+constexpr int kContactCols = 5;  // id, partner id, spring x, y, z
+
+void pack(const ParticleRecord& r, double* o)
+{
+  int k = 0;
+  for (double v : {double(r.id), r.radius, r.density, double(r.flags)}) o[k++] = v;
+  for (const Vec3& v : {r.x, r.v, r.w}) o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
+  for (double v : {r.q.w, r.q.x, r.q.y, r.q.z}) o[k++] = v;
+  for (const Vec3& v : {r.force, r.torque, r.fhyd, r.thyd, r.fluidMomentum, r.fluidAngularMomentum})
+    o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
+  for (const Vec3& v : r.wallSpring) o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
+}
+
+ParticleRecord unpack(const double* o)
+{
+  ParticleRecord r;
+  r.id = static_cast<std::int64_t>(o[0]);
+  r.radius = o[1];
+  r.density = o[2];
+  r.flags = static_cast<std::uint8_t>(o[3]);
+  int k = 4;
+  for (Vec3* v : {&r.x, &r.v, &r.w}) *v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
+  r.q = Quaternion{o[k], o[k + 1], o[k + 2], o[k + 3]};
+  k += 4;
+  for (Vec3* v : {&r.force, &r.torque, &r.fhyd, &r.thyd, &r.fluidMomentum, &r.fluidAngularMomentum})
+    *v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
+  for (Vec3& v : r.wallSpring) v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
+  return r;
+}
+
+std::vector<double> packRun(const RunState& s)
+{
+  return {double(s.step), s.time, s.dtOld, s.nextOutputTime, s.nextCheckpointTime, double(s.lastOutputStep)};
+}
+
+void unpackRun(const std::vector<double>& v, RunState& s)
+{
+  s.step = static_cast<int>(v[0]);
+  s.time = v[1];
+  s.dtOld = v[2];
+  s.nextOutputTime = v[3];
+  s.nextCheckpointTime = v[4];
+  s.lastOutputStep = static_cast<int>(v[5]);
+}
+
+const char* const kRunAttribute = "run";  // step, time, dt_old, next_output_time, next_checkpoint_time, last_output_step
+
+std::vector<std::pair<const char*, Vec>> named(const FluidState& f)
+{
+  return {{"velocity", f.velocity}, {"pressure", f.pressure}, {"convection_old", f.convectionOld},
+          {"pressure_increment", f.pressureIncrement}};
+}
+
+std::string list(const double* v, int n)
+{
+  std::string s;
+  for (int i = 0; i < n; ++i) s += (i ? "," : "") + formatNumber(v[i]);
+  return s;
+}
+
+// Reads the dataset's last value: a truncated file fails here rather than in the parallel load.
+bool lastValueReadable(hid_t ds, hid_t space)
+{
+  hsize_t dims[8], start[8], count[8];
+  const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
+  if (rank < 1 || rank > 8) return false;
+  for (int d = 0; d < rank; ++d) start[d] = dims[d] - 1, count[d] = 1;
+  hid_t fspace = H5Scopy(space);
+  H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, count, nullptr);
+  const hsize_t one = 1;
+  hid_t mspace = H5Screate_simple(1, &one, nullptr);
+  double value;
+  const bool ok = H5Dread(ds, H5T_NATIVE_DOUBLE, mspace, fspace, H5P_DEFAULT, &value) >= 0;
+  H5Sclose(mspace);
+  H5Sclose(fspace);
+  return ok;
+}
+
+void broadcast(MPI_Comm comm, std::vector<double>& v)
+{
+  unsigned long n = v.size();
+  MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, 0, comm);
+  v.resize(n);
+  if (n) MPI_Bcast(v.data(), static_cast<int>(n), MPI_DOUBLE, 0, comm);
+}
+
+} // namespace
+
+std::string checkpointName(int step)
+{
+  char name[64];
+  std::snprintf(name, sizeof name, "checkpoint_%06d.h5", step);
+  return name;
+}
+
+CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : comm_(comm), dir_(std::move(dir)), keep_(keep) {}
+
+void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const RunState& run, const FluidState& fluid,
+                             const std::vector<ParticleRecord>& owned)
+{
+  const std::string name = checkpointName(run.step), path = dir_ + "/" + name, tmp = path + ".tmp";
+  PetscViewer viewer;
+  VP_CALL(PetscViewerHDF5Open(comm_, tmp.c_str(), FILE_MODE_WRITE, &viewer));
+  for (auto [n, v] : named(fluid)) {
+    VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(v), n));
+    VP_CALL(VecView(v, viewer));
+  }
+  hid_t file;
+  VP_CALL(PetscViewerHDF5GetFileId(viewer, &file));
+
+  // Particles and their springs: one block of rows per rank.
+  std::vector<double> rows(kParticleCols * owned.size()), contacts;
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    pack(owned[i], &rows[kParticleCols * i]);
+    for (const ContactSpring& c : owned[i].history)
+      for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z}) contacts.push_back(v);
+  }
+  int rank;
+  MPI_Comm_rank(comm_, &rank);
+  auto table = [&](const char* dataset, const std::vector<double>& data, long cols) {
+    const long n = static_cast<long>(data.size()) / cols;
+    long offset = 0, total = 0;
+    MPI_Exscan(&n, &offset, 1, MPI_LONG, MPI_SUM, comm_);
+    MPI_Allreduce(&n, &total, 1, MPI_LONG, MPI_SUM, comm_);
+    if (rank == 0) offset = 0;
+    h5::writeRows(file, dataset, H5T_NATIVE_DOUBLE, data.data(), total, offset, n, cols);
+  };
+  table("particles", rows, kParticleCols);
+  table("contacts", contacts, kContactCols);
+  // The snapshot lists are the same on every rank: rank 0 writes them.
+  const std::vector<double> none;
+  table("field_snapshots", rank == 0 ? run.fieldSnapshots : none, 2);
+  table("particle_snapshots", rank == 0 ? run.particleSnapshots : none, 3);
+  h5::writeAttribute(file, "format", kFormat);
+  h5::writeAttribute(file, "version", &kVersion, 1);
+  h5::writeAttribute(file, "particle_columns", kParticleColumns);
+  const std::vector<double> r = packRun(run);
+  h5::writeAttribute(file, kRunAttribute, r.data(), static_cast<int>(r.size()));
+  int n[3], types[6];
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; ++d) n[d] = grid.n(d), lo[d] = grid.lo(d), hi[d] = grid.hi(d);
+  for (int f = 0; f < 6; ++f) types[f] = static_cast<int>(bc.type[f]);
+  h5::writeAttribute(file, "grid_n", n, 3);
+  h5::writeAttribute(file, "grid_lo", lo, 3);
+  h5::writeAttribute(file, "grid_hi", hi, 3);
+  h5::writeAttribute(file, "boundary_types", types, 6);
+  VP_CALL(PetscViewerDestroy(&viewer));
+
+  MPI_Barrier(comm_);
+  if (rank == 0) {
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " to " + path);
+    const std::string latest = dir_ + "/checkpoint_latest.h5", link = latest + ".tmp";
+    ::unlink(link.c_str());
+    if (::symlink(name.c_str(), link.c_str()) != 0 || std::rename(link.c_str(), latest.c_str()) != 0)
+      throw std::runtime_error("cannot point " + latest + " to " + name);
+    written_.push_back(path);
+    while (static_cast<int>(written_.size()) > keep_) {
+      std::remove(written_.front().c_str());
+      written_.pop_front();
+    }
+  }
+  MPI_Barrier(comm_);
+}
+
+CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const Config& cfg) : comm_(comm), path_(path)
+{
+  int rank;
+  MPI_Comm_rank(comm, &rank);
+  std::string error;
+  std::vector<double> header, rows, contacts, fieldSnaps, particleSnaps;
+  if (rank == 0) {
+    h5::QuietErrors quiet;
+    hid_t file = -1;
+    if (::access(path.c_str(), R_OK) != 0)
+      error = "cannot read '" + path + "' (no such file, or not readable)";
+    else if (H5Fis_hdf5(path.c_str()) <= 0 || (file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) < 0)
+      error = "'" + path + "' is not an HDF5 file (damaged, or not a checkpoint)";
+    std::string format;
+    int version = 0, n[3], types[6];
+    double lo[3], hi[3];
+    header.resize(6);
+    if (error.empty() && (!h5::readAttribute(file, "format", format) || format != kFormat))
+      error = "'" + path + "' is not a vpsolve checkpoint (no format attribute '" + kFormat + "')";
+    else if (error.empty() && (!h5::readAttribute(file, "version", &version, 1) || version != kVersion))
+      error = "'" + path + "' is checkpoint version " + std::to_string(version) + ", this vpsolve reads version " + std::to_string(kVersion);
+    else if (error.empty() && (!h5::readAttribute(file, kRunAttribute, header.data(), 6) || !h5::readAttribute(file, "grid_n", n, 3) ||
+                               !h5::readAttribute(file, "grid_lo", lo, 3) || !h5::readAttribute(file, "grid_hi", hi, 3) ||
+                               !h5::readAttribute(file, "boundary_types", types, 6)))
+      error = "'" + path + "' lacks run or grid attributes (damaged checkpoint)";
+    if (error.empty()) {
+      const double cn[3] = {double(cfg.grid.n[0]), double(cfg.grid.n[1]), double(cfg.grid.n[2])};
+      const double fn[3] = {double(n[0]), double(n[1]), double(n[2])};
+      bool sameBc = true;
+      for (int f = 0; f < 6; ++f) sameBc = sameBc && types[f] == static_cast<int>(cfg.bc.type[f]);
+      if (cn[0] != fn[0] || cn[1] != fn[1] || cn[2] != fn[2])
+        error = "'" + path + "' was written for -grid_n " + list(fn, 3) + ", this run has -grid_n " + list(cn, 3);
+      else if (lo[0] != cfg.grid.lo[0] || lo[1] != cfg.grid.lo[1] || lo[2] != cfg.grid.lo[2] || hi[0] != cfg.grid.hi[0] ||
+               hi[1] != cfg.grid.hi[1] || hi[2] != cfg.grid.hi[2])
+        error = "'" + path + "' was written for the box -grid_lo " + list(lo, 3) + " -grid_hi " + list(hi, 3) + ", this run has -grid_lo " +
+                list(cfg.grid.lo.data(), 3) + " -grid_hi " + list(cfg.grid.hi.data(), 3);
+      else if (!sameBc)
+        error = "'" + path + "' was written with other boundary conditions (-bc_xlo ... -bc_zhi must match the original run)";
+    }
+    // The fluid datasets: present and of the grid's size.
+    const double cells = double(cfg.grid.n[0]) * cfg.grid.n[1] * cfg.grid.n[2];
+    for (auto [name, dof] : {std::pair<const char*, int>{"velocity", 3}, {"pressure", 1}, {"convection_old", 3}, {"pressure_increment", 1}}) {
+      if (!error.empty()) break;
+      hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
+      if (ds < 0) {
+        error = "'" + path + "' lacks the dataset " + name + " (damaged checkpoint)";
+        break;
+      }
+      hid_t sp = H5Dget_space(ds);
+      if (double(H5Sget_simple_extent_npoints(sp)) != cells * dof)
+        error = "'" + path + "' dataset " + name + " does not match the grid (damaged checkpoint)";
+      else if (!lastValueReadable(ds, sp))
+        error = "'" + path + "' dataset " + name + " cannot be read (truncated or damaged checkpoint)";
+      H5Sclose(sp);
+      H5Dclose(ds);
+    }
+    hsize_t r = 0, c = 0;
+    for (auto [name, data, cols] : {std::tuple<const char*, std::vector<double>*, hsize_t>{"particles", &rows, kParticleCols},
+                                    {"contacts", &contacts, kContactCols}, {"field_snapshots", &fieldSnaps, 2},
+                                    {"particle_snapshots", &particleSnaps, 3}}) {
+      if (!error.empty()) break;
+      const std::string e = h5::readTable(file, name, *data, r, c);
+      if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
+      else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
+    }
+    if (file >= 0) H5Fclose(file);
+  }
+  int length = static_cast<int>(error.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  error.resize(length);
+  MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
+  if (!error.empty()) failOption("-restart", error);
+  for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
+  unpackRun(header, run_);
+  run_.fieldSnapshots = fieldSnaps;
+  run_.particleSnapshots = particleSnaps;
+  std::map<std::int64_t, std::size_t> index;
+  for (std::size_t i = 0; i * kParticleCols < rows.size(); ++i) {
+    particles_.push_back(unpack(&rows[kParticleCols * i]));
+    index[particles_.back().id] = i;
+  }
+  for (std::size_t k = 0; k + kContactCols <= contacts.size(); k += kContactCols) {
+    const auto it = index.find(static_cast<std::int64_t>(contacts[k]));
+    if (it == index.end()) failOption("-restart", "'" + path + "' has a contact spring of an unknown particle (damaged checkpoint)");
+    particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]}});
+  }
+}
+
+void CheckpointReader::loadFluid(const FluidState& fluid) const
+{
+  PetscViewer viewer;
+  VP_CALL(PetscViewerHDF5Open(comm_, path_.c_str(), FILE_MODE_READ, &viewer));
+  for (auto [n, v] : named(fluid)) {
+    VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(v), n));
+    VP_CALL(VecLoad(v, viewer));
+  }
+  VP_CALL(PetscViewerDestroy(&viewer));
+}
+
+} // namespace vp
