@@ -149,3 +149,31 @@ TEST_CASE("Density ratio 1.1: a released sphere accelerates smoothly towards its
   CHECK(-previous > 10 * -first);  // it did accelerate
   CHECK(-previous < 0.1);          // and stays below the terminal speed of the heavier seed sphere
 }
+
+TEST_CASE("Without particles a run is bitwise the fluid core's: the coupling costs nothing", "[mpi][coupling]")
+{
+  // A lid-driven cavity through Simulation (which builds the coupling only for particles) and
+  // through a bare Projection: the same velocity and pressure, bit for bit.
+  Config c = closedBox({12, 12, 12}, {1, 1, 1});
+  c.bc.type[5] = BcType::Velocity;
+  c.bc.velocity[5] = {1, 0, 0};
+  c.fluid.mu = 0.01;
+  Simulation sim(PETSC_COMM_WORLD, c);
+  REQUIRE(sim.particles() == nullptr);
+  REQUIRE(sim.penalization() == nullptr);
+  Grid grid(PETSC_COMM_WORLD, c.grid, c.bc);
+  Projection core(grid, c);
+  core.applyBoundaryConditions();
+  for (int k = 0; k < 10; ++k) {
+    const double dt = sim.nextDt();
+    sim.advance(dt);
+    core.step(dt);
+    core.finishStep();
+  }
+  CHECK(sim.fluid().stats().kineticEnergy > 0);  // the lid has set the fluid in motion
+  PetscBool sameU, sameP;
+  VecEqual(sim.fluid().velocity(), core.velocity(), &sameU);
+  VecEqual(sim.fluid().pressure(), core.pressure(), &sameP);
+  CHECK(sameU);
+  CHECK(sameP);
+}
