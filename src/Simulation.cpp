@@ -205,9 +205,10 @@ void Simulation::run()
 {
   printSetup();
   const bool snapshots = cfg_.output.every > 0 || cfg_.output.dt > 0;
-  // A restart has written the snapshot and the tracker rows of its first step already.
-  if (snapshots && lastOutputStep_ != step_) output();
-  if (tracker_ && step_ == 0) tracker_->record(dem_->particles(), time_);
+  // A restart continues the previous run's outputs: its snapshots and tracker rows are written.
+  const bool restarted = !cfg_.checkpoint.restart.empty();
+  if (snapshots && !restarted) output();
+  if (tracker_ && !restarted) tracker_->record(dem_->particles(), time_);
   const double loopStart = MPI_Wtime();
   while (time_ < cfg_.time.final * (1 - 1e-12) && step_ < cfg_.time.maxSteps) {
     const double dt = nextDt();
@@ -226,7 +227,10 @@ void Simulation::run()
     if (diagnostics_) diagnostics_->row(row);
     if (!std::isfinite(s.kineticEnergy))
       throw std::runtime_error("the flow blew up at step " + std::to_string(step_) + " (non-finite velocity); reduce -time_cfl or -time_dt_max");
-    if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) monitor(dt);
+    if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
+      monitor(dt);
+      if (tracker_) tracker_->flush();  // a running case's particle_<id>.csv can be followed too
+    }
     const bool due = (cfg_.output.every > 0 && step_ % cfg_.output.every == 0) ||
                      (cfg_.output.dt > 0 && time_ >= nextOutputTime_ * (1 - 1e-12));
     if (due) output();

@@ -2,7 +2,8 @@
 // Time series of tracked particles (-track_particles): particle_<id>.csv with columns
 // time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz (hydrodynamic force) followed by fcx,fcy,fcz (contact,
 // lubrication and gravity force) and tx,ty,tz (non-hydrodynamic torque). Owners send their rows to
-// rank 0, which buffers and appends them.
+// rank 0, which buffers them and appends them on flush() (Simulation flushes at every progress line
+// and checkpoint).
 #include "vp/particles/ParticleConfig.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include <map>
