@@ -3,10 +3,11 @@
   hasimoto: fixed sphere array, Stokes drag K vs Hasimoto at d/dx = 8, 12, 16 (24 with --fine)
   rotation: fixed sphere rotating at Omega in a periodic box, torque vs 8 pi mu a^3 Omega
   falling:  the seed's falling sphere at d/dx = 8, 12 (16 with --fine), u(t) vs Schiller-Naumann
-  width:    the same at d/dx = 8 in boxes 8, 12 and 16 d wide; and in a 12 d x 12 d x 10 d box at
-            d/dx = 8 (and 16 with --fine): wall effect and terminal speed
+  width:    the same at d/dx = 8 in boxes 8, 12 and 16 d wide; in a 12 d wide box 16 d tall at
+            d/dx = 8 and 10 d tall at d/dx = 8 (and 16 with --fine): wall effects, terminal speed
 usage: coupling.py [hasimoto|rotation|falling|width|all] [--fine] [--reuse]
-  --reuse: keep the runs already in /tmp/vp_val_* that reached their end time (re-plot only)"""
+  --reuse: plot the runs already in /tmp/vp_val_* as they are (also ones stopped early) instead of
+           running them again"""
 import csv, math, os, subprocess, sys
 import matplotlib
 matplotlib.use("Agg")
@@ -24,9 +25,7 @@ SN, CLIFT = 0.1462, 0.1418  # terminal speeds from Schiller-Naumann and the Clif
 
 def run(case, out, *opts):
     rows = lambda f: list(csv.DictReader(open(os.path.join(out, f))))
-    final = [o for k, o in zip(opts, opts[1:]) if k == "-time_final"]
-    if reuse and os.path.exists(os.path.join(out, "particle_0.csv")) and final and \
-            float(rows("diagnostics.csv")[-1]["time"]) >= float(final[0]) * (1 - 1e-9):
+    if reuse and os.path.exists(os.path.join(out, "particle_0.csv")):
         return rows("diagnostics.csv"), rows("particle_0.csv")
     cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", os.path.join(root, "cases", case), "-output_dir", out,
            "-monitor_every", "0", "-output_every", "0", "-output_dt", "0"] + [str(o) for o in opts]
@@ -114,7 +113,8 @@ def falling():
                          "-time_dt", dt, "-time_final", 2.2)
         t = [float(p["time"]) for p in part]
         w = [-float(p["vz"]) for p in part]
-        ax.plot(t, w, label="d/dx = %d (max %.4f m/s)" % (r, max(w)))
+        early = " to t = %.1f s" % t[-1] if t[-1] < 2.2 - 1e-9 else ""
+        ax.plot(t, w, label="d/dx = %d (max %.4f m/s%s)" % (r, max(w), early))
         print("falling: d/dx %d  max fall speed %.4f m/s (%+.1f %% vs 0.1462)" % (r, max(w), 100 * (max(w) / 0.1462 - 1)), flush=True)
     ax.axhline(SN, color="k", ls="--", label="Schiller-Naumann %.4f m/s" % SN)
     ax.axhline(CLIFT, color="k", ls=":", label="Clift-Grace-Weber drag curve %.4f m/s" % CLIFT)
@@ -127,42 +127,69 @@ def falling():
 
 
 def fall_speed(part, t0, t1):
-    """Mean fall speed over [t0, t1] (the terminal plateau, before the bottom wall is felt)."""
+    """Mean fall speed over [t0, t1] (the plateau, before the bottom wall is felt)."""
     w = [-float(p["vz"]) for p in part if t0 <= float(p["time"]) <= t1]
     return sum(w) / len(w)
+
+
+def terminal_fit(part, t0, t1):
+    """Terminal speed from a fit u(t) = u_inf - A exp(-t / tau) over [t0, t1] (least squares in
+    u_inf and A for each tau of a scan): the sphere meets the bottom before the plateau is flat."""
+    t = [float(p["time"]) for p in part if t0 <= float(p["time"]) <= t1]
+    w = [-float(p["vz"]) for p in part if t0 <= float(p["time"]) <= t1]
+    best = None
+    for k in range(1, 400):
+        tau = 0.005 * k
+        e = [math.exp(-x / tau) for x in t]
+        n, se, see = len(t), sum(e), sum(x * x for x in e)
+        sw, sew = sum(w), sum(x * y for x, y in zip(e, w))
+        det = n * see - se * se
+        u, a = (sw * see - se * sew) / det, (se * sw - n * sew) / det  # w = u - a e
+        res = sum((u - a * x - y) ** 2 for x, y in zip(e, w))
+        if best is None or res < best[0]:
+            best = (res, u, tau)
+    return best[1], best[2]
 
 
 def width():
     d = 0.0254
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
+
+    def report(ax, what, part, t0, t1):
+        u = fall_speed(part, t0, t1)
+        uf, tau = terminal_fit(part, 0.5, t1)
+        print("width: %s: mean fall speed over t = %.1f-%.1f s %.4f m/s (%+.1f %% vs SN, %+.1f %% vs Clift); fitted terminal "
+              "%.4f m/s (tau %.2f s; %+.1f %% vs SN, %+.1f %% vs Clift)" % (what, t0, t1, u, 100 * (u / SN - 1),
+              100 * (u / CLIFT - 1), uf, tau, 100 * (uf / SN - 1), 100 * (uf / CLIFT - 1)), flush=True)
+        ax.plot([float(p["time"]) for p in part], [-float(p["vz"]) for p in part],
+                label="%s: %.4f, fit %.4f m/s" % (what, u, uf))
+
     # d/dx 8, 12 d tall, released 10 d above the bottom: boxes 8, 12 and 16 d wide.
     for wd in (8, 12, 16):
         n, L = 8 * wd, wd * d
         diag, part = run("falling_sphere.opts", "/tmp/vp_val_width_%d" % wd, "-grid_n", "%d,%d,96" % (n, n),
                          "-grid_hi", "%g,%g,0.3048" % (L, L), "-particle_position", "%g,%g,0.254" % (L / 2, L / 2),
                          "-time_dt", 0.004, "-time_final", 1.9)
-        u = fall_speed(part, 1.2, 1.7)
-        print("width: %2d d box, d/dx 8: mean fall speed over t = 1.2-1.7 s %.4f m/s (%+.1f %% vs SN, %+.1f %% vs Clift)"
-              % (wd, u, 100 * (u / SN - 1), 100 * (u / CLIFT - 1)), flush=True)
-        a1.plot([float(p["time"]) for p in part], [-float(p["vz"]) for p in part], label="%d d wide: %.4f m/s" % (wd, u))
+        report(a1, "%d d wide" % wd, part, 1.2, 1.7)
     a1.set_title("d/dx = 8, box 12 d tall, width varied")
-    # 12 d x 12 d x 10 d, released 8.5 d above the bottom: d/dx 8 and 16.
+    # 12 d wide: 16 d tall at d/dx 8 (released 15 d up: the longest plateau); 10 d tall (released
+    # 8.5 d up) at d/dx 8 and 16.
+    diag, part = run("falling_sphere.opts", "/tmp/vp_val_tall_8", "-grid_n", "96,96,128", "-grid_hi", "0.3048,0.3048,0.4064",
+                     "-particle_position", "0.1524,0.1524,0.381", "-time_dt", 0.004, "-time_final", 2.5)
+    report(a2, "16 d tall, d/dx 8", part, 1.5, 2.2)
     for r in [8] + ([16] if fine else []):
         diag, part = run("falling_sphere.opts", "/tmp/vp_val_wide_%d" % r, "-grid_n", "%d,%d,%d" % (12 * r, 12 * r, 10 * r),
                          "-grid_hi", "0.3048,0.3048,0.254", "-particle_position", "0.1524,0.1524,0.2159",
                          "-time_dt", 0.004, "-time_final", 1.5, *(["-checkpoint_every", 50] if r > 8 else []))
-        u = fall_speed(part, 1.0, 1.4)
-        print("width: 12 d box, d/dx %d: mean fall speed over t = 1.0-1.4 s %.4f m/s (%+.1f %% vs SN, %+.1f %% vs Clift)"
-              % (r, u, 100 * (u / SN - 1), 100 * (u / CLIFT - 1)), flush=True)
-        a2.plot([float(p["time"]) for p in part], [-float(p["vz"]) for p in part], label="d/dx = %d: %.4f m/s" % (r, u))
-    a2.set_title("12 d x 12 d x 10 d box, grid varied")
+        report(a2, "10 d tall, d/dx %d" % r, part, 1.2, 1.5)
+    a2.set_title("12 d wide box: height and grid varied")
     for ax in (a1, a2):
         ax.axhline(SN, color="k", ls="--", lw=1, label="Schiller-Naumann %.4f" % SN)
         ax.axhline(CLIFT, color="k", ls=":", lw=1, label="Clift-Grace-Weber %.4f" % CLIFT)
         ax.axhspan(0.95 * SN, 1.05 * SN, color="0.9", zorder=0)
         ax.set_xlabel("t (s)")
-        ax.legend(fontsize=7, loc="lower right")
-    a1.set_ylabel("fall speed (m/s); legend: mean over the plateau")
+        ax.legend(fontsize=7, loc="lower right", title="plateau mean, fitted terminal", title_fontsize=7)
+    a1.set_ylabel("fall speed (m/s)")
     a1.set_ylim(0.08, 0.16)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "falling_sphere_box.png"), dpi=120)
