@@ -127,6 +127,7 @@ void DemSolver::computeForces(double dt)
       P.spring[k] = Vec3{};
       P.touching[k] = 0;
     }
+    if (!touching && !lubricated) continue;  // most listed pairs of a dry packing: no square root
     const double r = std::sqrt(r2);
     const double gap = r - s.radius[i] - s.radius[j];
     const bool lubricating = lubricated && gap < lub_.activation * std::min(s.radius[i], s.radius[j]);
