@@ -87,7 +87,7 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
 void Simulation::restore(const CheckpointReader& cp)
 {
   const RunState& r = cp.run();
-  cp.loadFluid({fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()});
+  cp.loadFluid(fluidState());
   fluid_->setPreviousDt(r.dtOld);
   fluid_->finishStep();
   step_ = r.step;
@@ -98,6 +98,11 @@ void Simulation::restore(const CheckpointReader& cp)
   nextCheckpointTime_ = r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt;
   lastCheckpointStep_ = step_;
   PetscPrintf(grid_.comm(), "vpsolve: restart from %s at step %d, t = %.6g s\n", cfg_.checkpoint.restart.c_str(), step_, time_);
+}
+
+FluidState Simulation::fluidState() const
+{
+  return {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()};
 }
 
 void Simulation::checkpoint()
@@ -116,7 +121,7 @@ void Simulation::checkpoint()
   r.lastOutputStep = lastOutputStep_;
   if (fields_) r.fieldSnapshots = fields_->snapshotList();
   if (particleWriter_) r.particleSnapshots = particleWriter_->snapshotList();
-  checkpoints_->write(grid_, cfg_.bc, r, {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()},
+  checkpoints_->write(grid_, cfg_.bc, r, fluidState(),
                       dem_ ? dem_->ownedRecords() : std::vector<ParticleRecord>{});
   lastCheckpointStep_ = step_;
 }

@@ -38,6 +38,7 @@ private:
   void checkpoint();  // checkpoint_<step>.h5 (ARCHITECTURE.md 9)
   // Continues from -restart: fluid state, particles, counters, output lists.
   void restore(const CheckpointReader& cp);
+  FluidState fluidState() const;  // the vectors a checkpoint holds
   // The penalization force on each particle from the predicted velocity, and the hydrodynamic
   // forces once the velocity is projected (dt = 0: only the fluid momentum, initial state).
   void penalize();

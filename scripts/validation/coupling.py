@@ -9,15 +9,7 @@ usage: coupling.py [hasimoto|rotation|falling|width|all] [--fine] [--reuse]
   --reuse: plot the runs already in /tmp/vp_val_* as they are (also ones stopped early) instead of
            running them again"""
 import csv, math, os, subprocess, sys
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-root = os.environ.get("VP_ROOT", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-ranks = os.environ.get("NP", "2")
-vpsolve = os.path.join(root, "build", "vpsolve")
-outdir = os.path.join(root, "docs", "validation")
-os.makedirs(outdir, exist_ok=True)
+from common import plt, root, ranks, vpsolve, outdir
 fine = "--fine" in sys.argv
 reuse = "--reuse" in sys.argv
 SN, CLIFT = 0.1462, 0.1418  # terminal speeds from Schiller-Naumann and the Clift-Grace-Weber drag curve

@@ -4,15 +4,7 @@ Runs vpsolve, reads its HDF5 output, writes docs/validation/{taylor_green_conver
 import math, os, subprocess
 import h5py
 import numpy as np
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-root = os.environ.get("VP_ROOT", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-np_ranks = os.environ.get("NP", "2")
-vpsolve = os.path.join(root, "build", "vpsolve")
-outdir = os.path.join(root, "docs", "validation")
-os.makedirs(outdir, exist_ok=True)
+from common import plt, root, ranks as np_ranks, vpsolve, outdir
 
 
 def run(case, out, *opts):

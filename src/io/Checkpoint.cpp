@@ -106,19 +106,12 @@ void broadcast(MPI_Comm comm, std::vector<double>& v)
 
 } // namespace
 
-std::string checkpointName(int step)
-{
-  char name[64];
-  std::snprintf(name, sizeof name, "checkpoint_%06d.h5", step);
-  return name;
-}
-
 CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : comm_(comm), dir_(std::move(dir)), keep_(keep) {}
 
 void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const RunState& run, const FluidState& fluid,
                              const std::vector<ParticleRecord>& owned)
 {
-  const std::string name = checkpointName(run.step), path = dir_ + "/" + name, tmp = path + ".tmp";
+  const std::string name = h5::stepFile("checkpoint", run.step), path = dir_ + "/" + name, tmp = path + ".tmp";
   PetscViewer viewer;
   VP_CALL(PetscViewerHDF5Open(comm_, tmp.c_str(), FILE_MODE_WRITE, &viewer));
   for (auto [n, v] : named(fluid)) {

@@ -9,17 +9,6 @@
 
 namespace vp {
 
-namespace {
-
-std::string fieldFile(int step)
-{
-  char name[64];
-  std::snprintf(name, sizeof name, "fields_%06d.h5", step);
-  return name;
-}
-
-} // namespace
-
 void makeOutputDir(MPI_Comm comm, const std::string& dir)
 {
   int rank, ok = 1;
@@ -76,7 +65,7 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure, 
     VP_CALL(DMDAVecRestoreArrayDOF(grid_.cellVectorDM(), centre_, &c));
     VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), velocityLocal, &u));
   }
-  const std::string path = dir_ + "/" + fieldFile(step);
+  const std::string path = dir_ + "/" + h5::stepFile("fields", step);
   PetscViewer viewer;
   VP_CALL(PetscViewerHDF5Open(grid_.comm(), path.c_str(), FILE_MODE_WRITE, &viewer));
   VP_CALL(VecView(centre_, viewer));
@@ -119,7 +108,7 @@ void FieldWriter::resume(const std::vector<double>& list)
   snapshots_.clear();
   for (std::size_t k = 0; k + 1 < list.size(); k += 2) {
     const int step = static_cast<int>(list[k]);
-    if (std::filesystem::exists(dir_ + "/" + fieldFile(step))) snapshots_.emplace_back(step, list[k + 1]);
+    if (std::filesystem::exists(dir_ + "/" + h5::stepFile("fields", step))) snapshots_.emplace_back(step, list[k + 1]);
   }
 }
 
@@ -133,7 +122,7 @@ void FieldWriter::writeXdmf(bool chi) const
     x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
       << "<Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const auto& [step, time] : snapshots_) {
-      const std::string file = fieldFile(step);
+      const std::string file = h5::stepFile("fields", step);
       x << "<Grid Name=\"step " << step << "\" GridType=\"Uniform\">\n"
         << "  <Time Value=\"" << time << "\"/>\n"
         << "  <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nz + 1 << " " << ny + 1 << " " << nx + 1 << "\"/>\n"

@@ -1,7 +1,15 @@
 #include "vp/io/Hdf5.hpp"
+#include <cstdio>
 #include <stdexcept>
 
 namespace vp::h5 {
+
+std::string stepFile(const char* prefix, int step)
+{
+  char name[96];
+  std::snprintf(name, sizeof name, "%s_%06d.h5", prefix, step);
+  return name;
+}
 
 QuietErrors::QuietErrors()
 {

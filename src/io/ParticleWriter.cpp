@@ -8,17 +8,6 @@
 
 namespace vp {
 
-namespace {
-
-std::string snapshotName(int step)
-{
-  char name[64];
-  std::snprintf(name, sizeof name, "particles_%06d.h5", step);
-  return name;
-}
-
-} // namespace
-
 ParticleWriter::ParticleWriter(MPI_Comm comm, std::string dir) : comm_(comm), dir_(std::move(dir)) {}
 
 void ParticleWriter::write(const ParticleStore& s, int step, double time)
@@ -50,7 +39,7 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
 
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   H5Pset_fapl_mpio(fapl, comm_, MPI_INFO_NULL);
-  const std::string path = dir_ + "/" + snapshotName(step);
+  const std::string path = dir_ + "/" + h5::stepFile("particles", step);
   hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   H5Pclose(fapl);
   if (file < 0) throw std::runtime_error("cannot create " + path);
@@ -81,7 +70,7 @@ void ParticleWriter::resume(const std::vector<double>& list)
   snapshots_.clear();
   for (std::size_t k = 0; k + 2 < list.size(); k += 3) {
     const int step = static_cast<int>(list[k]);
-    if (std::ifstream(dir_ + "/" + snapshotName(step))) snapshots_.push_back({step, list[k + 1], std::lround(list[k + 2])});
+    if (std::ifstream(dir_ + "/" + h5::stepFile("particles", step))) snapshots_.push_back({step, list[k + 1], std::lround(list[k + 2])});
   }
 }
 
@@ -95,7 +84,7 @@ void ParticleWriter::writeXdmf() const
       << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const Snapshot& sn : snapshots_) {
       if (sn.count == 0) continue;
-      const std::string f = snapshotName(sn.step);
+      const std::string f = h5::stepFile("particles", sn.step);
       const std::string N = std::to_string(sn.count);
       auto item = [&](const char* name, const char* dims, const char* type, int prec) {
         x << "     <DataItem Dimensions=\"" << dims << "\" NumberType=\"" << type << "\" Precision=\"" << prec

@@ -64,6 +64,4 @@ private:
   std::vector<ParticleRecord> particles_;
 };
 
-std::string checkpointName(int step);
-
 } // namespace vp

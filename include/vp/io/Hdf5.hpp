@@ -7,6 +7,9 @@
 
 namespace vp::h5 {
 
+// The file of one output step: <prefix>_<step, 6 digits>.h5 (fields, particles, checkpoint).
+std::string stepFile(const char* prefix, int step);
+
 // Turns HDF5's own error trace off while alive: callers report their own message.
 class QuietErrors {
 public:
