@@ -156,6 +156,8 @@ double Simulation::nextDt() const
     // Particles released from rest: a step may not let gravity move them more than cfl cells.
     const double g = norm(cfg_.gravity);
     if (dem_ && g > 0) dt = std::min(dt, std::sqrt(2 * cfg_.time.cfl * hmin / g));
+    // The saturated lubrication is an explicit dashpot in the DEM sub-steps.
+    if (dem_) dt = std::min(dt, dem_->lubricationStepLimit());
   }
   const double left = cfg_.time.final - time_;
   // Land on -time_final exactly instead of leaving a sliver of a step.

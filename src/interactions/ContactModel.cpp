@@ -10,7 +10,9 @@ ContactLaw::ContactLaw(const ContactConfig& c, double dtFluid)
     mu_(c.friction),
     ktRatio_(c.ktRatio),
     gtRatio_(c.gtRatio),
-    roughness_(c.roughness)
+    roughness_(c.roughness),
+    lnEt_(c.restitutionT > 0 ? std::log(c.restitutionT) : 0),
+    tangentialRestitution_(c.restitutionT > 0)
 {
 }
 
@@ -27,16 +29,28 @@ ContactCoefficients ContactLaw::coefficients(double meff, bool wall) const
     k.kn = meff * (pi2 + lnE_ * lnE_) / (tc_ * tc_);
     k.gn = -2 * meff * lnE_ / tc_;
   }
-  k.kt = ktRatio_ * k.kn;
-  k.gt = gtRatio_ * k.gn;
+  if (tangentialRestitution_) {
+    // A sticking contact point moves as an oscillator of mass (2/7) m* (solid spheres: the force
+    // accelerates the centres and spins them, 1/m + a^2/I = 7/(2m)); over the same duration as the
+    // normal contact it reverses its tangential velocity with the factor xi_t.
+    const double mt = 2.0 / 7.0 * meff, tc = duration(k, meff);
+    k.kt = mt * (pi2 + lnEt_ * lnEt_) / (tc * tc);
+    k.gt = -2 * mt * lnEt_ / tc;
+  } else {
+    k.kt = ktRatio_ * k.kn;
+    k.gt = gtRatio_ * k.gn;
+  }
   k.mu = mu_;
   return k;
 }
 
 double ContactLaw::contactTime(double meff, bool wall) const
 {
-  if (kn_ <= 0) return tc_;
-  const ContactCoefficients k = coefficients(meff, wall);
+  return kn_ > 0 ? duration(coefficients(meff, wall), meff) : tc_;
+}
+
+double ContactLaw::duration(const ContactCoefficients& k, double meff)
+{
   const double w0 = std::sqrt(k.kn / meff), zeta = k.gn / (2 * std::sqrt(k.kn * meff));
   return M_PI / (w0 * std::sqrt(1 - zeta * zeta));
 }

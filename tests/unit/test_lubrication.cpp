@@ -311,7 +311,7 @@ TEST_CASE("Lubrication pair forces: swap antisymmetry and angular momentum balan
         std::swap(swapped.radiusI, swapped.radiusJ);
         std::swap(swapped.velocityI, swapped.velocityJ);
         std::swap(swapped.angularVelocityI, swapped.angularVelocityJ);
-        const PairForce f = lubricationForce(p, s), g = lubricationForce(p, swapped);
+        const PairForce f = lubricationForce(p, s, 0), g = lubricationForce(p, swapped, 0);
         const double scaleT = norm(f.torqueI) + norm(f.torqueJ) + 1e-300;
         INFO("model " << lubModelName(model) << " eps " << eps << " ratio " << ratio);
         CHECK(relErr(g.forceI, -f.forceI, norm(f.forceI)) < 1e-12);
@@ -339,7 +339,7 @@ TEST_CASE("Lubrication is zero above the activation gap, continuous at it, const
         s.gap = eps * std::min(s.radiusI, s.radiusJ);
         return s;
       };
-      auto at = [&](double eps) { return lubricationForce(p, pair(eps)); };
+      auto at = [&](double eps) { return lubricationForce(p, pair(eps), 0); };
       const PairForce raw = lubricationModelForce(model, p.llcmRegion, pair(p.activation));
       const double scale = norm(raw.forceI);
       CHECK(norm(at(p.activation).forceI) == 0);
@@ -362,7 +362,7 @@ TEST_CASE("None gives no force", "[lub]")
   p.model = LubModel::None;
   p.activation = 1;
   p.saturation = 1e-3;
-  const PairForce f = lubricationForce(p, genericPair(1e-3, 1));
+  const PairForce f = lubricationForce(p, genericPair(1e-3, 1), 0);
   CHECK(norm(f.forceI) == 0);
   CHECK(norm(f.torqueI) == 0);
   CHECK(norm(f.torqueJ) == 0);
@@ -386,7 +386,7 @@ TEST_CASE("BLCM in a pair-loop integration: quasi-steady approach under a consta
   s.viscosity = kMu;
   s.gap = 0.2 * kA;
   while (s.gap > 1e-4 * kA) {
-    const double force = -F + lubricationForce(p, s).forceI.y;
+    const double force = -F + lubricationForce(p, s, 0).forceI.y;
     s.velocityI.y += dt * force / mass;
     s.gap += dt * s.velocityI.y;
   }
@@ -394,4 +394,86 @@ TEST_CASE("BLCM in a pair-loop integration: quasi-steady approach under a consta
   const double expected = F / (6 * M_PI * kMu * kA * (1 / eps - 1 / p.activation));
   INFO("U / U_quasi-steady = " << -s.velocityI.y / expected);
   CHECK(-s.velocityI.y == Approx(expected).epsilon(1e-2));
+}
+
+TEST_CASE("Hand-off: no lubrication once the surfaces touch, saturated resistance just above", "[lub]")
+{
+  LubricationParams p;
+  p.activation = 0.1;
+  p.saturation = 1e-3;
+  for (LubModel model : {LubModel::Blcm, LubModel::Llcm})
+    for (double ratio : kRatios) {
+      p.model = model;
+      PairState s = genericPair(1, ratio);
+      const double a = std::min(s.radiusI, s.radiusJ), contactGap = 4e-4 * a;
+      for (double eps : {4e-4, 3e-4, 0.0, -1e-3}) {  // at, below the roughness gap, overlapping
+        s.gap = eps * a;
+        const PairForce f = lubricationForce(p, s, contactGap);
+        INFO("model " << lubModelName(model) << " ratio " << ratio << " eps " << eps);
+        CHECK(norm(f.forceI) == 0);
+        CHECK(norm(f.torqueI) + norm(f.torqueJ) == 0);
+      }
+      // Just outside contact, below saturation: the saturated value, as without a contact gap.
+      s.gap = 5e-4 * a;
+      CHECK(norm(lubricationForce(p, s, contactGap).forceI - lubricationForce(p, s, 0).forceI) == 0);
+      CHECK(norm(lubricationForce(p, s, contactGap).forceI) > 0);
+    }
+}
+
+TEST_CASE("A free-slip wall gets a quarter of the squeeze and no shear", "[lub]")
+{
+  LubricationParams p;
+  p.activation = 0.5;
+  p.saturation = 1e-4;
+  for (LubModel model : {LubModel::Blcm, LubModel::Llcm}) {
+    p.model = model;
+    for (double eps : {1e-3, 1e-2, 0.1}) {
+      PairState s = genericPair(eps, 1);  // oblique velocities and spins
+      s.radiusJ = kWallRadius;
+      s.angularVelocityJ = Vec3{};
+      s.gap = eps * s.radiusI;
+      const PairForce noSlip = lubricationForce(p, s, 0);
+      s.slipWall = true;
+      const PairForce slip = lubricationForce(p, s, 0);
+      INFO("model " << lubModelName(model) << " eps " << eps);
+      CHECK(dot(slip.forceI, s.normal) == Approx(0.25 * dot(noSlip.forceI, s.normal)).epsilon(1e-14));
+      CHECK(norm(s.tangential(slip.forceI)) <= 1e-15 * norm(slip.forceI));
+      CHECK(norm(slip.torqueI) == 0);
+      if (model == LubModel::Llcm)  // the no-slip wall does resist the sliding
+        CHECK(norm(s.tangential(noSlip.forceI)) > 1e-3 * norm(noSlip.forceI));
+    }
+  }
+}
+
+TEST_CASE("Activation in grid cells: the same gap for every pair radius", "[lub]")
+{
+  LubricationParams p;
+  p.model = LubModel::Blcm;
+  p.activationCells = 1.5;
+  const double h = 1e-4;
+  p.complete(h, false, 1e-3, 2e-3);
+  for (double ratio : kRatios) {
+    PairState s = genericPair(1, ratio);
+    CHECK(p.activationGap(std::min(s.radiusI, s.radiusJ)) == Approx(1.5 * h).epsilon(1e-15));
+    s.gap = 1.5 * h * (1 + 1e-9);
+    CHECK(norm(lubricationForce(p, s, 0).forceI) == 0);
+    s.gap = 1.5 * h * (1 - 1e-3);
+    CHECK(norm(lubricationForce(p, s, 0).forceI) > 0);
+  }
+}
+
+TEST_CASE("Saturated resistance: BLCM wall value minus its activation value", "[lub]")
+{
+  LubricationParams p;
+  p.model = LubModel::Blcm;
+  p.activation = 0.1;
+  p.saturation = 1e-3;
+  PairState wall;
+  wall.normal = {0, 0, 1};
+  wall.radiusI = kA;
+  wall.radiusJ = kWallRadius;
+  wall.viscosity = kMu;
+  // c = 6 pi mu a (1/eps_sat - 1/eps_act); a contact gap above the saturation gap takes its place.
+  CHECK(lubricationResistance(p, wall, 0) == Approx(6 * M_PI * kMu * kA * (1 / 1e-3 - 1 / 0.1)).epsilon(1e-12));
+  CHECK(lubricationResistance(p, wall, 4e-3 * kA) == Approx(6 * M_PI * kMu * kA * (1 / 4e-3 - 1 / 0.1)).epsilon(1e-9));
 }

@@ -67,14 +67,24 @@ TEST_CASE("Lubrication parameters completed by the caller", "[lub]")
 {
   LubricationParams p;
   p.model = LubModel::Blcm;
-  p.complete(0.2, 4e-4); // activation from the grid, saturation from the roughness
-  CHECK(p.activation == 0.2);
+  p.complete(1e-4, true, 4e-4, 1e-3); // coupled: activation 1.5 cells; saturation from the roughness
+  CHECK(p.activationCells == 1.5);
+  CHECK(p.activationGap(1e-3) == Approx(1.5e-4).epsilon(1e-15));
+  CHECK(p.activationGap(5e-4) == p.activationGap(1e-3));
   CHECK(p.saturation == 4e-4);
   LubricationParams q;
   q.model = LubModel::Blcm;
-  CHECK_THROWS_WITH(q.complete(0, 4e-4), "option -lub_activation: must be > 0 (gap over radius), got 0");
+  CHECK_THROWS_WITH(q.complete(1e-4, false, 4e-4, 1e-3), "option -lub_activation: must be > 0 (gap over radius), got 0 "
+                                                         "(DEM-only runs set -lub_activation or -lub_activation_cells)");
   LubricationParams r;
   r.model = LubModel::Llcm;
   r.activation = 0.01;
-  CHECK_THROWS_WITH(r.complete(0.2, 0.05), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
+  CHECK_THROWS_WITH(r.complete(1e-4, true, 0.05, 1e-3), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
+  CHECK(r.activationGap(2e-3) == Approx(2e-5).epsilon(1e-15));  // eps_act given: per pair radius
+  LubricationParams t;
+  t.model = LubModel::Llcm;
+  t.activationCells = 1;
+  t.saturation = 0.2;  // 0.2 a = 2e-4 m for a = 1e-3 m: above the 1-cell activation gap
+  CHECK_THROWS_WITH(t.complete(1e-4, true, 4e-4, 1e-3),
+                    Catch::Contains("option -lub_saturation: the saturation gap 0.2 a must be > 0 and below the activation gap"));
 }

@@ -1,9 +1,9 @@
 #pragma once
-// Soft-sphere contact law (PHYSICS.md 3) as pure kernels: linear spring-dashpot in the normal
+// Soft-sphere contact law (docs/particles.md) as pure kernels: linear spring-dashpot in the normal
 // direction, a tangential spring with history capped by Coulomb friction, for sphere-sphere and
 // sphere-wall contacts. No grid, no MPI; the caller supplies geometry and kinematics.
 #include "vp/core/Vec3.hpp"
-#include "vp/particles/ParticleConfig.hpp"
+#include "vp/interactions/ContactConfig.hpp"
 #include <cmath>
 
 namespace vp {
@@ -27,7 +27,11 @@ public:
   double roughness() const { return roughness_; }
 
 private:
+  // Half period of the damped normal oscillator (k_n, gamma_n) of mass m*.
+  static double duration(const ContactCoefficients& k, double meff);
   double tc_ = 0, kn_ = 0, knWall_ = 0, lnE_ = 0, mu_ = 0, ktRatio_ = 0, gtRatio_ = 0, roughness_ = 0;
+  double lnEt_ = 0;  // ln xi_t; 0 with xi_t unset (the ratios apply)
+  bool tangentialRestitution_ = false;
 };
 
 struct ContactForce {

@@ -4,7 +4,7 @@
 // sphere centre at height y > a, velocity v = dy/dt. Forces along y:
 //   buoyant weight  (m - m_f) g
 //   drag            -3 pi mu d (1 + 0.15 Re^0.687) v                 (Schiller & Naumann)
-//   lubrication     -6 pi mu a v / max(eps, eps_col)                   (held below the roughness)
+//   lubrication     -6 pi mu a v / eps  down to the roughness gap eps_col, zero in contact
 //   added mass      -(m' dv/dt + (1/2) (dm'/dt) v),  m' = (2/3) pi rho a^3 C(eps) (image series)
 //   history         -6 a^2 sqrt(pi rho mu) int_0^t v'(s) / sqrt(t - s) ds  (Basset, from rest)
 //   contact         k_n delta - gamma_n v while delta = h_col - h > 0 (linear spring-dashpot,

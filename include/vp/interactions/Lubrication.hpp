@@ -17,6 +17,7 @@ struct PairState {
   Vec3 velocityI, velocityJ;   // translational velocities [m/s] (a wall may slide)
   Vec3 angularVelocityI, angularVelocityJ; // [1/s]; a wall's is ignored
   double viscosity = 0;        // mu [Pa s]
+  bool slipWall = false;       // the wall is free-slip (no shear stress on it)
 
   bool isWall() const { return std::isinf(radiusJ); }
   // Curvatures 1/a; a wall has zero curvature, which is how every formula takes the wall limit.

@@ -1,8 +1,11 @@
 #pragma once
 // Lubrication correction for a pair loop: model choice, activation and saturation.
-// Only the part the grid does not resolve is applied (PHYSICS.md 4.3):
-//   F_lub(h) = F_model(max(h, h_sat)) - F_model(h_act)  for h < h_act,  0 otherwise,
-// with h_act = activation * a and h_sat = saturation * a, a = min(a_i, a_j) (a_i at a wall).
+// Only the part the grid does not resolve is applied (docs/lubrication.md):
+//   F_lub(h) = F_model(max(h, h_sat)) - F_model(h_act)  for h_contact < h < h_act,  0 otherwise,
+// with h_act = activation * a (or a fixed gap in grid cells), h_sat = saturation * a,
+// a = min(a_i, a_j) (a_i at a wall). Zero once the surfaces touch (h <= h_contact, the roughness
+// gap): the contact model alone acts there. A free-slip wall gets a quarter of the squeeze and no
+// shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
 #include "vp/interactions/Lubrication.hpp"
@@ -14,24 +17,36 @@ const char* lubModelName(LubModel m);
 
 struct LubricationParams {
   LubModel model = LubModel::None;
-  // eps_act = h_act / a. 0 means "set by the caller": from the grid spacing in coupled runs
-  // (about one to two cells), required explicitly in DEM-only runs.
+  // eps_act = h_act / a, per pair radius. 0: the gap activationCells grid cells instead.
   double activation = 0;
+  // h_act in grid cells (when activation is 0); 0: set by complete() (1.5 in coupled runs).
+  double activationCells = 0;
   // eps_sat = h_sat / a: the force is held constant below it. 0 means "set by the caller" to the
   // contact roughness gap (2 * -contact_roughness, which is a fraction of the diameter).
   double saturation = 0;
   double llcmRegion = 1; // R0 = r0 / R, radius of the LLCM lubrication region in reduced radii
 
-  // Sets the caller-supplied defaults where the options left 0 and checks the complete set
-  // (throws InputError naming the option).
-  void complete(double activationFromGrid, double saturationFromRoughness);
+  // Sets the defaults where the options left 0 and checks the complete set for spheres up to
+  // radius rmax (throws InputError naming the option). coupled: a fluid is solved (the activation
+  // then defaults to 1.5 cells; DEM-only runs must give it).
+  void complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax);
+  // Activation gap h_act [m] of a pair whose smaller radius is a.
+  double activationGap(double a) const { return activation > 0 ? activation * a : gridGap_; }
+
+private:
+  double gridGap_ = 0;  // activationCells * cell size [m]
 };
 
 // Raw model force at the state's gap (no activation or saturation).
 PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s);
 
-// The correction a pair loop adds for a sphere-sphere or sphere-wall pair. Needs activation > 0
-// and 0 < saturation < activation (see complete()).
-PairForce lubricationForce(const LubricationParams& p, const PairState& s);
+// The correction a pair loop adds for a sphere-sphere or sphere-wall pair (complete() called).
+// contactGap: the surface gap at which the contact model takes over (roughness).
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap);
+
+// Largest normal resistance c = |F_n| / U_n the correction reaches for this pair geometry (at
+// max(h_sat, contactGap)); an explicit dashpot c on a reduced mass m is stable for dt < m / c with
+// the DEM's integrator (docs/lubrication.md).
+double lubricationResistance(const LubricationParams& p, const PairState& geometry, double contactGap);
 
 } // namespace vp

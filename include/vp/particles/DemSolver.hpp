@@ -12,6 +12,7 @@
 #include "vp/particles/ParticleConfig.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include "vp/particles/Walls.hpp"
+#include <cmath>
 #include <memory>
 
 namespace vp {
@@ -41,8 +42,10 @@ public:
   const ParticleStore& particles() const { return store_; }
   // Collective: global sums over owned particles.
   DemDiagnostics diagnostics() const;
-  // A stable DEM step: the shortest contact duration / 50 (collective).
+  // A stable DEM step: the shortest contact duration / 50, within the lubrication bound (collective).
   double suggestedStep() const;
+  // Longest fluid step the lubrication dashpot allows with -dem_substeps (infinite without one).
+  double lubricationStepLimit() const { return lubStableSubstep_ * pc_.substeps; }
   ParticleExchange& exchange() { return *exchange_; }
   // Collective: ghosts get the owners' current x, v, omega, q (the last sub-step sends predicted
   // velocities); the fluid coupling builds its mask from them.
@@ -59,16 +62,34 @@ private:
   void rebuild();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
+  // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
+  bool excludesResolvedForce(std::size_t i, double overlap, double kn) const;
+  // The resolved force and torque particle i feels: without the dynamic part while excluded
+  // (the buoyancy, which the fluid's pressure does not carry, stays).
+  Vec3 resolvedForce(std::size_t i) const
+  {
+    const ParticleStore& s = store_;
+    return (s.flags[i] & kResolvedForceOff) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
+  }
+  Vec3 resolvedTorque(std::size_t i) const { return (store_.flags[i] & kResolvedForceOff) ? Vec3{} : store_.thyd[i]; }
+  // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
+  // `all` and the walls [1/s].
+  double lubricationRate(const std::vector<ParticleRecord>& all) const;
+  // Throws InputError naming the options when a sub-step exceeds the lubrication bound.
+  void checkLubricationStep(double dtp) const;
 
   const Grid& grid_;
   ParticleConfig pc_;
   ContactLaw law_;
   LubricationParams lub_;  // model none: no lubrication pairs
   double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
-  double lubGap_ = 0;      // largest activation gap, activation * largest radius [m]
+  double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
+  double lubGap_ = 0;      // largest activation gap [m]
+  double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
+  ContactHydro resolvedInContact_;  // -contact_hydro (keep in DEM-only runs)
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)
   double skin_ = 0;        // neighbour-list skin [m]

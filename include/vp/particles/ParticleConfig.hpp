@@ -3,6 +3,7 @@
 // read from the PETSc options database and validated once; bad values raise vp::InputError naming
 // the option and the valid range.
 #include "vp/core/Vec3.hpp"
+#include "vp/interactions/ContactConfig.hpp"
 #include "vp/interactions/LubricationModel.hpp"
 #include <cstdint>
 #include <mpi.h>
@@ -34,21 +35,6 @@ struct SingleInput {
   bool set = false;
   Vec3 position, velocity, angularVelocity;
   bool fixed = false;
-};
-
-// Soft-sphere contact parameters (PHYSICS.md 3). Stiffness comes either from the contact time
-// (-contact_tc or -contact_tc_steps, stiffness per pair mass) or directly (-contact_kn,
-// -contact_kn_wall); the normal damping always gives the restitution -contact_restitution.
-struct ContactConfig {
-  double restitution = 0.9;   // normal restitution coefficient xi_n, (0, 1]
-  double friction = 0.25;     // Coulomb coefficient mu_c (sphere-sphere and sphere-wall)
-  double tc = 0;              // contact time [s] (0: not set)
-  double tcSteps = 0;         // contact time in fluid steps (0: not set)
-  double kn = 0;              // sphere-sphere normal stiffness [N/m] (0: not set)
-  double knWall = 0;          // sphere-wall normal stiffness [N/m] (0: same as kn)
-  double ktRatio = 2.0 / 7.0; // k_t / k_n
-  double gtRatio = 0.5;       // gamma_t / gamma_n
-  double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
 };
 
 struct ParticleConfig {

@@ -10,7 +10,10 @@
 
 namespace vp {
 
-enum ParticleFlag : std::uint8_t { kFixed = 1 };
+// kFixed: held in place; its velocities are kept (a prescribed motion the fluid sees).
+// kResolvedForceOff: in a contact whose resolved hydrodynamic force is excluded (-contact_hydro),
+// set by the DEM's force loop for the next kicks.
+enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };
 
 // Everything one particle carries when it changes owner (ARCHITECTURE.md 6 sync policy).
 struct ParticleRecord {

@@ -11,6 +11,7 @@ struct Wall {
   int axis = 0;
   double position = 0;
   double normalSign = 1;   // +1 on the low face, -1 on the high face
+  bool slip = false;       // free-slip face (lubrication: docs/lubrication.md)
   Vec3 velocity;
 
   // Distance from a point to the wall plane, positive inside the domain.
@@ -32,6 +33,7 @@ inline std::array<Wall, 6> domainWalls(const Config& c)
     w[f].axis = d;
     w[f].position = (f % 2 == 0) ? c.grid.lo[d] : c.grid.hi[d];
     w[f].normalSign = (f % 2 == 0) ? 1 : -1;
+    w[f].slip = c.bc.type[f] == BcType::Slip;
     if (c.bc.type[f] == BcType::Velocity) w[f].velocity = c.bc.velocity[f];
   }
   return w;
