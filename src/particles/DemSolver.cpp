@@ -267,7 +267,7 @@ void DemSolver::substep(double dt)
     const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
-    if (!s.fixed(i)) s.x[i] += dt * s.vHalf[i];  // a fixed particle's velocity is a prescribed motion
+    s.x[i] += dt * s.vHalf[i];  // a fixed particle moves with its prescribed, constant velocity
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
   }

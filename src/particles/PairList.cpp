@@ -22,7 +22,8 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
     const double range = (s.radius[i] + s.radius[j]) * (1 + rough) + lubricationGap + skin;
     const Vec3 d = s.x[i] - s.x[j];
     if (dot(d, d) >= range * range) return;
-    if (s.invMass[i] + s.invMass[j] == 0) return;  // two fixed spheres never interact
+    // Two fixed spheres interact only through lubrication of a prescribed motion (resistance studies).
+    if (s.invMass[i] + s.invMass[j] == 0 && norm(s.v[i]) + norm(s.w[i]) + norm(s.v[j]) + norm(s.w[j]) == 0) return;
     const bool swap = s.id[j] < s.id[i];
     const auto a = static_cast<std::uint32_t>(swap ? j : i), b = static_cast<std::uint32_t>(swap ? i : j);
     c.push_back({s.id[a], s.id[b], a, b});

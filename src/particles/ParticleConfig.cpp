@@ -75,10 +75,10 @@ PetscErrorCode registerOptions(MPI_Comm comm, ParticleConfig& c, Raw& raw)
     PetscCall(vec3Option("-particle_velocity", "Its velocity (m/s)", c.single.velocity, &set));
     PetscCall(vec3Option("-particle_angular_velocity", "Its angular velocity (rad/s)", c.single.angularVelocity, &set));
     PetscBool fixed = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particle_fixed", "Hold the particle in place; its velocity and angular velocity are a prescribed motion the fluid sees (resistance measurements)", "", fixed, &fixed, nullptr));
+    PetscCall(PetscOptionsBool("-particle_fixed", "Infinite mass: the particle keeps its given velocity and angular velocity, a prescribed motion (held in place without them)", "", fixed, &fixed, nullptr));
     c.single.fixed = fixed;
     PetscBool all = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particles_fixed", "Hold every particle in place (hydrodynamic forces still measured; given velocities are a prescribed motion)", "", all, &all, nullptr));
+    PetscCall(PetscOptionsBool("-particles_fixed", "Every particle of infinite mass: held in place, or moving at its given constant velocity (forces still measured)", "", all, &all, nullptr));
     c.allFixed = all;
     PetscCall(PetscOptionsReal("-particle_radius", "Radius of the single particle and of generated ones (m)", "", c.radius, &c.radius, nullptr));
     PetscCall(PetscOptionsReal("-particle_density", "Density of the single particle and of generated ones (kg/m^3)", "", c.density, &c.density, nullptr));

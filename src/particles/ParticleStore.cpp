@@ -43,8 +43,8 @@ void ParticleStore::append(const ParticleRecord& r)
   invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
   invInertia[i] = (r.flags & kFixed) ? 0 : 1 / (0.4 * m * radius[i] * radius[i]);
   x[i] = r.x;
-  // A fixed particle stays in place (zero inverse mass, no drift); its velocity and spin are kept,
-  // constant: a prescribed motion that the fluid and the lubrication see.
+  // A fixed particle has zero inverse mass: its velocity and spin are kept, constant, a prescribed
+  // motion (at rest when none is given) that the fluid and the lubrication see.
   v[i] = r.v;
   w[i] = r.w;
   q[i] = r.q;

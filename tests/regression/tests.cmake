@@ -112,6 +112,12 @@ vp_bad_input(penalization_width 1 "option -penalization_width: must be in \\(0, 
 vp_case_run(falling_sphere 2 --expect kinetic_energy=1.128669797e-05:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 20
             -output_every 10 -monitor_every 0)
+# The collision cases, coarse (d/dx 4) and short, on 2 ranks: they run, write the contracted outputs
+# and reproduce stored values (the physics is in scripts/validate collisions).
+vp_case_run(restitution 2 --expect kinetic_energy=4.363987281e-06:1e-6 --expect particle_kinetic_energy=1.382467573e-05:1e-6
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -grid_n 24,24,28 ${VP_SHORT})
+vp_case_run(oblique_collision 2 --expect kinetic_energy=6.725132015e-05:1e-6 --expect particle_kinetic_energy=0.000848004485:1e-6
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 ${VP_SHORT})
 
 # --- Checkpoint/restart -------------------------------------------------------------------------
 set(VP_CHECK_RESTART /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py)

@@ -10,7 +10,8 @@
 
 namespace vp {
 
-// kFixed: held in place; its velocities are kept (a prescribed motion the fluid sees).
+// kFixed: infinite mass and inertia; moves with its given constant velocity and spin (a prescribed
+// motion; held in place when they are zero).
 // kResolvedForceOff: in a contact whose resolved hydrodynamic force is excluded (-contact_hydro),
 // set by the DEM's force loop for the next kicks.
 enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };

@@ -1,0 +1,372 @@
+#!/usr/bin/python3
+"""Collision validation (docs/collisions.md), plots into docs/validation/:
+  restitution: e(St) of a steel sphere (d = 3 mm, rho_p/rho 8.34) driven onto a wall, St 5-1000 by
+               the viscosity, against e_dry exp(-35/St); -contact_hydro keep (and limit at 3 St)
+  gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
+  oblique:     dry (Foerster glass, DEM only) and wet (Joseph & Hunt steel and glass in glycerol-water)
+               impacts, Psi_2 and Psi_out against Psi_in with the rigid-body lines
+  calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres, parallel, rotating):
+               resolved force alone and with LLCM/BLCM against the exact values
+  sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c and sub-steps
+usage: collisions.py [restitution|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse]
+  --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
+  --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
+import csv, math, os, subprocess, sys
+from common import plt, root, ranks, vpsolve, outdir
+
+reuse = "--reuse" in sys.argv
+res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
+E_DRY = 0.97
+STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
+
+
+def run(out, *opts, case="restitution.opts", np=None):
+    """Runs vpsolve (unless --reuse finds the run) and returns the tracked particle's rows."""
+    done = os.path.join(out, "particle_0.csv")
+    if not (reuse and os.path.exists(done)):
+        subprocess.run(["rm", "-rf", out], check=True)
+        cmd = ["mpirun", "-n", str(np or ranks), vpsolve]
+        if case != "none":  # first: the options after it override the case's
+            cmd += ["-options_file", os.path.join(root, "cases", case)]
+        cmd += ["-output_dir", out, "-monitor_every", "0", "-output_every", "0", "-output_dt", "0", "-track_particles", "all"]
+        subprocess.run(cmd + [str(o) for o in opts], check=True, stdout=subprocess.DEVNULL, cwd=root)
+    return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(done))]
+
+
+def impact(rows, a, axis="z", gap_in=0.1):
+    """Impact on the floor z = 0: speed at gap gap_in * d, largest rebound speed after contact, and
+    the impact Stokes-number speed. Returns (u_in, u_out, touched)."""
+    d = 2 * a
+    g = [(r[axis] - a) / d for r in rows]
+    v = [r["v" + axis] for r in rows]
+    u_in = None
+    for i in range(1, len(rows)):
+        if g[i - 1] > gap_in >= g[i]:
+            w = (g[i - 1] - gap_in) / (g[i - 1] - g[i])
+            u_in = -(v[i - 1] + w * (v[i] - v[i - 1]))
+            break
+    first = next((i for i in range(len(rows)) if g[i] <= 2e-4), None)
+    u_out = max(v[first:]) if first is not None else 0.0
+    return u_in, max(u_out, 0.0), first is not None
+
+
+def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
+    """Steel sphere of diameter d at nominal St (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d
+    box, released 3 d above the floor at 0.585 m/s. Returns (St at impact, e, u_in)."""
+    r = r or res
+    a, u = d / 2, 0.585
+    mu = STEEL * u * d / (9 * st)
+    h = d / r
+    n = 6 * r
+    dt = 0.5 * h / u  # CFL 0.5 at the release speed
+    out = "/tmp/vp_col_%s" % (label or "e_st%g_%s_r%d_d%g" % (st, hydro, r, d))
+    rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
+               "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
+               "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
+               "-contact_hydro", hydro, *extra)
+    u_in, u_out, touched = impact(rows, a)
+    if u_in is None:
+        return None
+    return STEEL * u_in * d / (9 * mu), u_out / u_in, u_in, rows
+
+
+ST_LIST = [5, 20, 40, 70, 100, 152, 300, 500, 1000]
+
+
+def restitution():
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    s = [10 ** (k / 50) for k in range(0, 151)]
+    ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
+    ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
+                    color="0.85", label="pass band +-0.1 (St 20-1000)")
+    table = []
+    for hydro, mark, st_list in (("keep", "o", ST_LIST), ("limit", "s", [27, 152, 1000])):
+        pts = []
+        for st in st_list:
+            r = restitution_run(st, hydro)
+            if r is None:
+                print("restitution: St %g %s: the sphere never reached the wall" % (st, hydro), flush=True)
+                continue
+            sti, e, u_in, _ = r
+            pts.append((sti, e / E_DRY))
+            ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
+            print("restitution: -contact_hydro %-5s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
+                  "exp(-35/St) %.3f%s" % (hydro, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
+            table.append((hydro, st, u_in, sti, e))
+        ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % hydro)
+    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
+    ax.set_ylabel("e / e_dry")
+    ax.set_title("Restitution of a steel sphere on a wall, d/dx = %d" % res)
+    ax.legend(fontsize=8)
+    ax.set_ylim(-0.05, 1.1)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "restitution_stokes.png"), dpi=120)
+
+
+# --- Gondret's set-ups: trajectories ------------------------------------------------------------------
+GONDRET = {  # St: (d, rho_p/rho, nu, u_in); steel rho_p 7800
+    27: (0.006, 8.083, 1.036e-4, 0.518),
+    152: (0.003, 8.342, 1.070e-5, 0.585),
+}
+
+
+def gondret_run(st, hydro, r=None, extra=()):
+    r = r or res
+    d, ratio, nu, u = GONDRET[st]
+    rho = STEEL / ratio
+    h = d / r
+    dt = 0.5 * h / u
+    out = "/tmp/vp_col_gondret_st%d_%s_r%d" % (st, hydro, r) + "".join(str(x) for x in extra).replace("-", "_")
+    rows = run(out, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 10 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 10 * d),
+               "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", d / 2,
+               "-particle_velocity", "0,0,%g" % -u, "-fluid_rho", rho, "-fluid_mu", rho * nu, "-time_dt", dt,
+               "-time_final", 0.15 if st == 152 else 0.1, "-dem_substeps", 200, "-contact_hydro", hydro, *extra)
+    return d, rows
+
+
+def apexes(rows, a):
+    """Heights (gap/d) of the local maxima of the trajectory after the first contact."""
+    d = 2 * a
+    g = [(x["z"] - a) / d for x in rows]
+    first = next((i for i in range(len(g)) if g[i] <= 2e-4), len(g))
+    return [g[i] for i in range(first + 1, len(g) - 1) if g[i - 1] < g[i] >= g[i + 1] and g[i] > 1e-3]
+
+
+def gondret(hydro="keep"):
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, st in zip(axes, (27, 152)):
+        d, rows = gondret_run(st, hydro)
+        tref = math.sqrt(d / 9.81)
+        u_in, u_out, _ = impact(rows, d / 2)
+        first = next(i for i, x in enumerate(rows) if (x["z"] - d / 2) / d <= 2e-4)
+        t0 = rows[first]["time"]
+        ax.plot([(x["time"] - t0) / tref for x in rows], [(x["z"] - d / 2) / d for x in rows], "-", label="vpsolve d/dx %d" % res)
+        ax.axhline(0, color="k", lw=0.5)
+        ap = apexes(rows, d / 2)
+        print("gondret: St %d (-contact_hydro %s): u(0.1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
+              "(exp(-35/St) %.3f); apex heights (gap/d) %s" %
+              (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st),
+               ", ".join("%.3f" % x for x in ap[:3]) or "none"), flush=True)
+        ax.set_title("Gondret St %d: d = %g mm, t_ref = sqrt(d/g) = %.4f s" % (st, d * 1e3, tref), fontsize=9)
+        ax.set_xlabel("(t - t_contact) / t_ref")
+        ax.set_ylabel("gap / d")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "gondret_trajectories.png"), dpi=120)
+
+
+# --- Oblique impacts ------------------------------------------------------------------------------------
+PSI_IN = [0.1, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0]
+
+
+def psi(rows, a):
+    """Psi_in, Psi_out, Psi_2 and the normal restitution from a trajectory (floor z = 0, no spin in)."""
+    d = 2 * a
+    g = [(x["z"] - a) / d for x in rows]
+    first = next(i for i in range(len(g)) if g[i] <= 2e-4)
+    last = next((i for i in range(first, len(g)) if g[i] > 2e-4), len(g) - 1)
+    vc = lambda x: x["vx"] - a * x["wy"]  # contact point's tangential velocity
+    i_in = max(0, first - 1)
+    # Leaving: the largest upward speed after the contact (the liquid slows it afterwards).
+    i_out = max(range(last, min(len(rows), last + 5)), key=lambda i: rows[i]["vz"])
+    vn_in, vn_out = -rows[i_in]["vz"], rows[i_out]["vz"]
+    return vc(rows[i_in]) / vn_in, vc(rows[i_out]) / vn_out, vc(rows[i_out]) / vn_in, vn_out / vn_in
+
+
+def oblique_dry():
+    """Foerster et al.: glass a = 1.59 mm in air, e 0.83, friction 0.11; DEM only."""
+    a, vn = 1.59e-3, 0.5
+    out = []
+    for pin in PSI_IN:
+        o = "/tmp/vp_col_dry_psi%g" % pin
+        rows = run(o, "-fluid_off", "-grid_n", "4,4,4", "-grid_lo", "0,0,0", "-grid_hi", "0.2,0.02,0.02",
+                   "-particle_position", "0.01,0.01,%g" % (a * 1.02), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
+                   "-particle_radius", a, "-particle_density", 2500, "-contact_restitution", 0.83,
+                   "-contact_friction", 0.11, "-contact_restitution_t", 0.1, "-contact_tc", 1e-5, "-time_dt", 1e-5,
+                   "-dem_substeps", 100, "-time_final", 2e-4, np=1, case="none")
+        out.append(psi(rows, a))
+    return out
+
+
+def oblique_wet(material):
+    """Joseph & Hunt: d = 12.7 mm, steel in 45 % or glass in 33 % glycerol-water."""
+    d = 0.0127
+    rho_p, rho, mu, mu_c = {"steel": (7780, 1113, 4.5e-3, 0.02), "glass": (2540, 1081, 2.5e-3, 0.15)}[material]
+    vn = 0.3
+    out = []
+    r = min(res, 12)
+    for pin in PSI_IN:
+        o = "/tmp/vp_col_wet_%s_psi%g_r%d" % (material, pin, r)
+        rows = run(o, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 4 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 4 * d),
+                   "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 1.5 * d), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
+                   "-particle_density", rho_p, "-fluid_rho", rho, "-fluid_mu", mu, "-contact_friction", mu_c,
+                   "-time_dt", 0.5 * d / r / (vn * math.hypot(1, pin)), "-time_final", 1.6 * d / vn, "-dem_substeps", 200,
+                   case="oblique_collision.opts")
+        out.append(psi(rows, d / 2))
+    return out, mu_c, rho_p * vn * d / (9 * mu), r
+
+
+def oblique():
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
+    dry = oblique_dry()
+    sets = [("dry glass (Foerster), DEM", dry, 0.11)]
+    for m in ("steel", "glass"):
+        pts, mu_c, st, r = oblique_wet(m)
+        sets.append(("wet %s, St %.0f, d/dx %d" % (m, st, r), pts, mu_c))
+    for ax, (title, pts, mu_c) in zip(axes, sets):
+        e = sorted(p[3] for p in pts)[len(pts) // 2]  # the median normal restitution of the set
+        line = [p - 3.5 * mu_c * (1 + e) for p in PSI_IN]
+        ax.plot(PSI_IN, line, "k-", label="Psi_in - (7/2) mu (1 + e), e = %.2f" % e)
+        ax.plot([p[0] for p in pts], [p[2] for p in pts], "o", mfc="none", label="Psi_2 (vpsolve)")
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "x", label="Psi_out (vpsolve)")
+        crit = 3.5 * mu_c * (1 + e)
+        worst = max((abs(p[2] - (p[0] - crit)) for p in pts if p[0] > 1.2 * crit), default=float("nan"))
+        print("oblique: %s: friction %.2f, e %.3f; sliding branch (Psi_in > %.2f): largest |Psi_2 - line| %.3f; "
+              "sticking Psi_2/Psi_in at Psi_in 0.1: %.3f" % (title, mu_c, e, 1.2 * crit, worst, pts[0][2] / pts[0][0]), flush=True)
+        for p in pts:
+            print("oblique:   Psi_in %.3f  Psi_out %.3f  Psi_2 %.3f  e_n %.3f" % p, flush=True)
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("Psi_in")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "oblique_impacts.png"), dpi=120)
+
+
+# --- Sensitivity at St 27 and 152 ------------------------------------------------------------------------
+def sensitivity():
+    variants = [("reference", []), ("activation 1 cell", ["-lub_activation_cells", 1]),
+                ("activation 2 cells", ["-lub_activation_cells", 2]), ("saturation x3", ["-lub_saturation", 3 * 4e-4]),
+                ("R0 0.5", ["-lub_llcm_r0", 0.5]), ("R0 2", ["-lub_llcm_r0", 2]), ("t_c 8 steps", ["-contact_tc_steps", 8]),
+                ("t_c 20 steps", ["-contact_tc_steps", 20]), ("sub-steps 400", ["-dem_substeps", 400])]
+    for st in (27, 152):
+        base = None
+        for name, opts in variants:
+            d, ratio, nu, u = GONDRET[st]
+            r = restitution_run(st, "keep", r=12, extra=opts, d=d,
+                                label="sens_st%d_%s" % (st, name.replace(" ", "_")))
+            e = r[1]
+            base = base or e
+            print("sensitivity: St %d, d/dx 12, %-18s e %.3f (%+.1f %%)" % (st, name, e, 100 * (e / base - 1)), flush=True)
+
+
+# --- Calibration: fixed spheres with a prescribed motion in Stokes flow ------------------------------
+A, MU, U = 0.5, 1.0, 0.01          # radius, viscosity, speed (Re = 0.01); d = 1
+GAPS = [0.01, 0.05, 0.1, 0.2, 0.5, 1.0]
+TWO = {1.0: 1.01933, 0.5: 1.38621, 0.2: 2.31277, 0.1: 3.70665, 0.05: 6.35564, 0.01: 26.71115}
+FXT = {0.01: 3.42253, 0.05: 2.59896, 0.1: 2.26430, 0.2: 1.95271, 0.5: 1.59571, 1.0: 1.38275}
+TYR = {0.01: 2.24080, 0.05: 1.66746, 0.1: 1.45485, 0.2: 1.27664, 0.5: 1.11050, 1.0: 1.04178}
+
+
+def brenner(eps):
+    """Brenner (1961): F / (6 pi mu a U) of a sphere moving normal to a plane wall, gap eps a."""
+    al = math.acosh(1 + eps)
+    tot, n = 0.0, 1
+    while n < 2000:
+        num = 2 * math.sinh((2 * n + 1) * al) + (2 * n + 1) * math.sinh(2 * al)
+        den = 4 * math.sinh((n + 0.5) * al) ** 2 - (2 * n + 1) ** 2 * math.sinh(al) ** 2
+        term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * (num / den - 1)
+        tot += term
+        if abs(term) < 1e-14 * abs(tot):
+            break
+        n += 1
+    return 4 / 3 * math.sinh(al) * tot
+
+
+MODES = {  # exact value, normalisation, and how each is read from particle_0.csv
+    "normal": (lambda e: brenner(e), "F / (6 pi mu a U), normal to a wall"),
+    "pair": (lambda e: TWO[e], "F / (6 pi mu a V), two spheres approaching"),
+    "parallel": (lambda e: FXT[e], "F / (6 pi mu a U), parallel to a wall"),
+    "rotation": (lambda e: TYR[e], "T / (8 pi mu a^3 Omega), rotating at a wall"),
+}
+
+
+def calib_geometry(mode, eps):
+    """Options of the fixed, moving sphere(s) at gap eps a (the box is 4 d on each side, d = 1)."""
+    bc = ["-bc_xlo", "periodic", "-bc_xhi", "periodic", "-bc_ylo", "periodic", "-bc_yhi", "periodic"]
+    z = A * (1 + eps)
+    if mode == "pair":
+        return bc + ["-bc_zlo", "periodic", "-bc_zhi", "periodic"], None
+    one = ["-particle_position", "2,2,%r" % z, "-particle_fixed"]
+    if mode == "normal":
+        one += ["-particle_velocity", "0,0,%r" % -U]
+    elif mode == "parallel":
+        one += ["-particle_velocity", "%r,0,0" % U]
+    else:
+        one += ["-particle_angular_velocity", "0,%r,0" % (U / A)]
+    return bc, one
+
+
+def pair_file(out, eps):
+    os.makedirs(out, exist_ok=True)
+    f = os.path.join(out, "pair.csv")
+    x0 = 2 - A - eps * A / 2
+    with open(f, "w") as o:
+        o.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n")
+        o.write("0,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0, A, U / 2))
+        o.write("1,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0 + 2 * A + eps * A, A, -U / 2))
+    return f
+
+
+def calib_value(mode, row, resolved=True):
+    """Normalised resistance from a particle_0.csv row: the resolved force (fx..) or the correction (fcx..)."""
+    f = "f" if resolved else "fc"
+    t = "th" if resolved else "t"
+    if mode == "normal":
+        return row[f + "z"] / (6 * math.pi * MU * A * U)
+    if mode in ("pair", "parallel"):
+        return -row[f + "x"] / (6 * math.pi * MU * A * U)
+    return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (U / A))
+
+
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0):
+    """Resolved run (lub none: the fluid) or DEM-only correction (lub blcm/llcm) at d/dx r."""
+    n = 4 * r
+    bc, one = calib_geometry(mode, eps)
+    tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
+    out = "/tmp/vp_col_cal_" + tag
+    part = ["-particles_file", pair_file(out + "_in", eps), "-particles_fixed"] if one is None else one
+    common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
+              "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
+              "-contact_roughness", 1e-4] + bc + part
+    if lub == "none":
+        rows = run(out, *common, "-time_dt", 0.15, "-time_final", 12, "-lub_model", "none", case="none")
+        drift = abs(calib_value(mode, rows[-1]) / calib_value(mode, rows[-14]) - 1)
+        if drift > 2e-3:
+            print("calibration: %s eps %g d/dx %d not steady: %.2g change over the last 2 s" % (mode, eps, r, drift))
+        return calib_value(mode, rows[-1])
+    rows = run(out, *common, "-fluid_off", "-time_dt", 1e-3, "-time_max_steps", 1, "-lub_model", lub,
+               "-lub_activation_cells", cells, "-lub_llcm_r0", r0, np=1, case="none")
+    return calib_value(mode, rows[0], resolved=False)
+
+
+def calibration():
+    res_list = {"normal": [8, 12, 16, 24], "pair": [8, 12, 16], "parallel": [8, 12, 16], "rotation": [8, 12, 16]}
+    fig, axes = plt.subplots(2, 2, figsize=(10, 8))
+    for ax, (mode, (exact, title)) in zip(axes.flat, MODES.items()):
+        ex = [exact(e) for e in GAPS]
+        ax.loglog(GAPS, ex, "k-", lw=2, label="exact")
+        for k, r in enumerate(res_list[mode]):
+            resolved = [calib_run(mode, e, r) for e in GAPS]
+            llcm = [calib_run(mode, e, r, "llcm") for e in GAPS]
+            blcm = [calib_run(mode, e, r, "blcm") for e in GAPS]
+            c = "C%d" % k
+            ax.loglog(GAPS, resolved, "o--", color=c, mfc="none", label="resolved, d/dx %d" % r)
+            ax.loglog(GAPS, [x + y for x, y in zip(resolved, llcm)], "s-", color=c, label="+ LLCM, d/dx %d" % r)
+            for e, x, y, z, q in zip(GAPS, ex, resolved, llcm, blcm):
+                print("calibration: %-8s d/dx %2d eps %5g  exact %8.4f  resolved %8.4f (%+6.1f %%)  + LLCM %8.4f (%+6.1f %%)"
+                      "  + BLCM %8.4f (%+6.1f %%)  [activation 1.5 cells = eps %.3f]" %
+                      (mode, r, e, x, y, 100 * (y / x - 1), y + z, 100 * ((y + z) / x - 1), y + q, 100 * ((y + q) / x - 1),
+                       1.5 / r / A), flush=True)
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("gap eps = h / a")
+        ax.legend(fontsize=6)
+    fig.suptitle("Resolved force and resolved + LLCM (activation 1.5 cells) vs exact Stokes resistances")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "lubrication_calibration.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
+    for name in ("restitution", "gondret", "oblique", "calibration", "sensitivity"):
+        if what in (name, "all") and name in globals():
+            globals()[name]()
