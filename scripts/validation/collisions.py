@@ -17,6 +17,7 @@ from common import plt, root, ranks, vpsolve, outdir
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
 E_DRY = 0.97
+HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it
 STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
 
 
@@ -34,20 +35,25 @@ def run(out, *opts, case="restitution.opts", np=None):
 
 
 def impact(rows, a, axis="z", gap_in=0.1):
-    """Impact on the floor z = 0: speed at gap gap_in * d, largest rebound speed after contact, and
-    the impact Stokes-number speed. Returns (u_in, u_out, touched)."""
+    """Impact on the floor z = 0, measured symmetrically outside the lubrication film: the approach
+    speed as the gap passes gap_in d on the way down, the rebound speed as it passes gap_in d on the
+    way up after the first contact (0 when it never rises that far: no rebound; right after contact
+    the saturated film takes what the contact returns, so the speed at release is not the rebound).
+    Returns (u_in, u_out, touched)."""
     d = 2 * a
     g = [(r[axis] - a) / d for r in rows]
     v = [r["v" + axis] for r in rows]
-    u_in = None
-    for i in range(1, len(rows)):
-        if g[i - 1] > gap_in >= g[i]:
-            w = (g[i - 1] - gap_in) / (g[i - 1] - g[i])
-            u_in = -(v[i - 1] + w * (v[i] - v[i - 1]))
-            break
+
+    def crossing(i):  # speed interpolated at gap_in between rows i-1 and i
+        w = (g[i - 1] - gap_in) / (g[i - 1] - g[i])
+        return v[i - 1] + w * (v[i] - v[i - 1])
+
+    down = next((i for i in range(1, len(rows)) if g[i - 1] > gap_in >= g[i]), None)
     first = next((i for i in range(len(rows)) if g[i] <= 2e-4), None)
-    u_out = max(v[first:]) if first is not None else 0.0
-    return u_in, max(u_out, 0.0), first is not None
+    if down is None or first is None:
+        return (None if down is None else -crossing(down)), 0.0, first is not None
+    up = next((i for i in range(first + 1, len(rows)) if g[i - 1] < gap_in <= g[i]), None)
+    return -crossing(down), (crossing(up) if up is not None else 0.0), True
 
 
 def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
@@ -65,7 +71,7 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
                "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
                "-contact_hydro", hydro, *extra)
     u_in, u_out, touched = impact(rows, a)
-    if u_in is None:
+    if u_in is None or not touched:
         return None
     return STEEL * u_in * d / (9 * mu), u_out / u_in, u_in, rows
 
@@ -132,7 +138,7 @@ def apexes(rows, a):
     return [g[i] for i in range(first + 1, len(g) - 1) if g[i - 1] < g[i] >= g[i + 1] and g[i] > 1e-3]
 
 
-def gondret(hydro="keep"):
+def gondret(hydro=HYDRO):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, st in zip(axes, (27, 152)):
         d, rows = gondret_run(st, hydro)
@@ -234,19 +240,26 @@ def oblique():
 
 # --- Sensitivity at St 27 and 152 ------------------------------------------------------------------------
 def sensitivity():
-    variants = [("reference", []), ("activation 1 cell", ["-lub_activation_cells", 1]),
-                ("activation 2 cells", ["-lub_activation_cells", 2]), ("saturation x3", ["-lub_saturation", 3 * 4e-4]),
-                ("R0 0.5", ["-lub_llcm_r0", 0.5]), ("R0 2", ["-lub_llcm_r0", 2]), ("t_c 8 steps", ["-contact_tc_steps", 8]),
-                ("t_c 20 steps", ["-contact_tc_steps", 20]), ("sub-steps 400", ["-dem_substeps", 400])]
-    for st in (27, 152):
+    """e of the 3 mm steel sphere at nominal St 40 and 152 (impact St about 27 and 130) at d/dx 12,
+    one parameter changed at a time; the grid by d/dx 8 and 16."""
+    variants = [("reference", [], 12), ("d/dx 8", [], 8), ("d/dx 16", [], 16),
+                ("activation 1 cell", ["-lub_activation_cells", 1], 12),
+                ("activation 2 cells", ["-lub_activation_cells", 2], 12),
+                ("saturation x3", ["-lub_saturation", 3 * 4e-4], 12), ("R0 0.5", ["-lub_llcm_r0", 0.5], 12),
+                ("R0 2", ["-lub_llcm_r0", 2], 12), ("t_c 8 steps", ["-contact_tc_steps", 8], 12),
+                ("t_c 20 steps", ["-contact_tc_steps", 20], 12), ("sub-steps 400", ["-dem_substeps", 400], 12)]
+    for st in (40, 152):
         base = None
-        for name, opts in variants:
-            d, ratio, nu, u = GONDRET[st]
-            r = restitution_run(st, "keep", r=12, extra=opts, d=d,
-                                label="sens_st%d_%s" % (st, name.replace(" ", "_")))
-            e = r[1]
-            base = base or e
-            print("sensitivity: St %d, d/dx 12, %-18s e %.3f (%+.1f %%)" % (st, name, e, 100 * (e / base - 1)), flush=True)
+        for name, opts, r in variants:
+            label = None if name in ("reference", "d/dx 8", "d/dx 16") else "sens_st%d_%s" % (st, name.replace(" ", "_").replace("/", ""))
+            out = restitution_run(st, HYDRO, r=r, extra=opts, label=label)
+            if out is None:
+                print("sensitivity: nominal St %d, %s: no impact" % (st, name), flush=True)
+                continue
+            sti, e = out[0], out[1]
+            base = base if base is not None else e
+            print("sensitivity: nominal St %3d, %-18s impact St %6.1f  e %.3f (%+.1f %% vs d/dx 12 reference)" %
+                  (st, name, sti, e, 100 * (e / base - 1) if base else 0), flush=True)
 
 
 # --- Calibration: fixed spheres with a prescribed motion in Stokes flow ------------------------------

@@ -95,10 +95,11 @@ vp_bad_input(contact_restitution_t 1 "option -contact_restitution_t: must be in 
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution_t 2)
 vp_bad_input(lub_activation_twice 1 "option -lub_activation_cells: give either -lub_activation or -lub_activation_cells"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1 -lub_activation_cells 2)
-# The saturated lubrication is an explicit dashpot: a fixed step beyond its bound is refused.
-vp_bad_input(lub_unstable_substep 1 "option -dem_substeps: the DEM sub-step .* exceeds the stability bound .* raise -dem_substeps to at least"
-             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model blcm -lub_activation 0.1
-             -contact_roughness 1e-4 -fluid_mu 10 -time_dt 1e-3 -dem_substeps 1)
+# The saturated lubrication is an explicit dashpot: a sphere at the saturation gap with a sub-step
+# beyond its bound stops the run.
+vp_bad_input(lub_unstable_substep 1 "option -dem_substeps: the DEM sub-step .* is unstable for the lubrication .* raise -dem_substeps to at least"
+             -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.0010003 -particle_radius 0.001
+             -lub_model blcm -lub_activation 0.1 -contact_roughness 1e-4 -fluid_mu 10 -time_dt 1e-3 -dem_substeps 1)
 vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(valid: none, blcm, llcm\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model stokes)
 

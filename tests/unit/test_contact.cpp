@@ -139,16 +139,26 @@ TEST_CASE("The saturated lubrication dashpot bounds the DEM sub-step", "[contact
   pc.lubrication.model = LubModel::Blcm;
   pc.lubrication.activation = 0.1;
   const double a = 1e-3, m = 1000 * 4.0 / 3.0 * M_PI * a * a * a;
-  const double limit = 0.5 * m / (6 * M_PI * 0.3 * a * (1 / 1e-3 - 1 / 0.1));  // wall, eps_sat 1e-3
+  const double resistance = 6 * M_PI * 0.3 * a * (1 / 1e-3 - 1 / 0.1);  // wall, saturated at eps 1e-3
+  const double limit = 0.5 * m / resistance;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
-  CHECK(dem.suggestedStep() == Approx(limit).epsilon(1e-9));
-  CHECK_NOTHROW(dem.advance(0, 0.99 * limit));
-  CHECK_THROWS_WITH(dem.advance(0, 1.5 * limit),
-                    Catch::Contains("option -dem_substeps: the DEM sub-step") && Catch::Contains("raise -dem_substeps to at least 2"));
-  // A fixed fluid step is checked when the run is set up, before anything is written.
-  c.time.dt = 3 * limit;
-  CHECK_THROWS_AS(DemSolver(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)}), InputError);
+  SECTION("the suggested DEM step respects it")
+  {
+    DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
+    CHECK(dem.suggestedStep() == Approx(limit).epsilon(1e-9));
+  }
+  SECTION("beyond it, a sphere far from everything runs; at the saturation gap the run stops")
+  {
+    c.time.dt = 3 * limit;  // a fixed step beyond the bound: a warning, not an error
+    DemSolver far(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
+    CHECK_NOTHROW(far.advance(0, 3 * limit));
+    const Vec3 atSaturation{0.005, 0.005, a * (1 + 1.0001e-3)};
+    DemSolver stable(grid, c, pc, {sphere(1, atSaturation, a, 1000)});
+    CHECK_NOTHROW(stable.advance(0, 1.98 * limit));  // c dt / m = 0.99
+    DemSolver unstable(grid, c, pc, {sphere(1, atSaturation, a, 1000)});
+    CHECK_THROWS_WITH(unstable.advance(0, 3 * limit),
+                      Catch::Contains("option -dem_substeps: the DEM sub-step") && Catch::Contains("raise -dem_substeps to at least 3"));
+  }
 }
 
 TEST_CASE("A free-slip wall resists a squeeze four times less than a no-slip wall", "[contact][lub][dem]")

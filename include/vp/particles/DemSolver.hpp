@@ -75,8 +75,13 @@ private:
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
-  // Throws InputError naming the options when a sub-step exceeds the lubrication bound.
-  void checkLubricationStep(double dtp) const;
+  // Sub-steps per fluid step that keep the saturated lubrication stable at sub-step dtp.
+  long requiredSubsteps(double dtp) const;
+  // With a sub-step beyond the bound: the largest c (1/m_i + 1/m_j) a lubricating pair reaches
+  // (recorded in the force loop), and the collective check after the fluid step (InputError
+  // naming the options once a pair is unstable).
+  void watchLubrication(const PairState& st, double contactGap, double invMassSum);
+  void checkLubricationSeen(double dtp);
 
   const Grid& grid_;
   ParticleConfig pc_;
@@ -86,6 +91,8 @@ private:
   double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
   double lubGap_ = 0;      // largest activation gap [m]
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
+  bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
+  double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
