@@ -76,7 +76,7 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
     return STEEL * u_in * d / (9 * mu), u_out / u_in, u_in, rows
 
 
-ST_LIST = [5, 20, 40, 70, 100, 152, 300, 500, 1000]
+ST_LIST = [5, 20, 30, 40, 70, 100, 152, 300, 500]
 
 
 def restitution():
@@ -86,12 +86,12 @@ def restitution():
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
     table = []
-    for hydro, mark, st_list in (("keep", "o", ST_LIST), ("limit", "s", [27, 152, 1000])):
+    for hydro, mark, st_list in (("keep", "o", ST_LIST), ("limit", "s", [40, 152, 500])):
         pts = []
         for st in st_list:
             r = restitution_run(st, hydro)
             if r is None:
-                print("restitution: St %g %s: the sphere never reached the wall" % (st, hydro), flush=True)
+                print("restitution: St %g %s: no contact within the run (a creeping approach: no rebound)" % (st, hydro), flush=True)
                 continue
             sti, e, u_in, _ = r
             pts.append((sti, e / E_DRY))
@@ -240,15 +240,16 @@ def oblique():
 
 # --- Sensitivity at St 27 and 152 ------------------------------------------------------------------------
 def sensitivity():
-    """e of the 3 mm steel sphere at nominal St 40 and 152 (impact St about 27 and 130) at d/dx 12,
-    one parameter changed at a time; the grid by d/dx 8 and 16."""
-    variants = [("reference", [], 12), ("d/dx 8", [], 8), ("d/dx 16", [], 16),
+    """e of the 3 mm steel sphere at nominal St 152 (impact St about 130; with --fine also nominal
+    St 40, impact about 27, and d/dx 16) at d/dx 12, one parameter changed at a time."""
+    fine = [("d/dx 16", [], 16)] if "--fine" in sys.argv else []
+    variants = [("reference", [], 12), ("d/dx 8", [], 8)] + fine + [
                 ("activation 1 cell", ["-lub_activation_cells", 1], 12),
                 ("activation 2 cells", ["-lub_activation_cells", 2], 12),
                 ("saturation x3", ["-lub_saturation", 3 * 4e-4], 12), ("R0 0.5", ["-lub_llcm_r0", 0.5], 12),
                 ("R0 2", ["-lub_llcm_r0", 2], 12), ("t_c 8 steps", ["-contact_tc_steps", 8], 12),
                 ("t_c 20 steps", ["-contact_tc_steps", 20], 12), ("sub-steps 400", ["-dem_substeps", 400], 12)]
-    for st in (40, 152):
+    for st in (152, 40) if "--fine" in sys.argv else (152,):
         base = None
         for name, opts, r in variants:
             label = None if name in ("reference", "d/dx 8", "d/dx 16") else "sens_st%d_%s" % (st, name.replace(" ", "_").replace("/", ""))
@@ -293,90 +294,114 @@ MODES = {  # exact value, normalisation, and how each is read from particle_0.cs
 }
 
 
+RELAX = 3 * A * A / MU    # viscous relaxation time of a run: 3 a^2 / nu (rho = 1)
+SHRINK = 1.05             # normal and pair runs close the gap from SHRINK eps to eps over RELAX
+
+
 def calib_geometry(mode, eps):
-    """Options of the fixed, moving sphere(s) at gap eps a (the box is 4 d on each side, d = 1)."""
+    """Options of the sphere(s) of infinite mass moving with a prescribed velocity (box 4 d, d = 1):
+    towards the floor or towards each other, closing the gap from SHRINK eps to eps over RELAX; along
+    the floor at gap eps; spinning in place at gap eps. Stokes flow is linear: forces scale with U."""
     bc = ["-bc_xlo", "periodic", "-bc_xhi", "periodic", "-bc_ylo", "periodic", "-bc_yhi", "periodic"]
-    z = A * (1 + eps)
+    closing = (SHRINK - 1) * eps * A / RELAX  # speed that closes the gap by (SHRINK - 1) eps a
     if mode == "pair":
-        return bc + ["-bc_zlo", "periodic", "-bc_zhi", "periodic"], None
-    one = ["-particle_position", "2,2,%r" % z, "-particle_fixed"]
+        return bc + ["-bc_zlo", "periodic", "-bc_zhi", "periodic"], None, closing
     if mode == "normal":
-        one += ["-particle_velocity", "0,0,%r" % -U]
-    elif mode == "parallel":
-        one += ["-particle_velocity", "%r,0,0" % U]
-    else:
-        one += ["-particle_angular_velocity", "0,%r,0" % (U / A)]
-    return bc, one
+        return bc, ["-particle_position", "2,2,%r" % (A * (1 + SHRINK * eps)), "-particle_fixed",
+                    "-particle_velocity", "0,0,%r" % -closing], closing
+    one = ["-particle_position", "2,2,%r" % (A * (1 + eps)), "-particle_fixed"]
+    if mode == "parallel":
+        return bc, one + ["-particle_velocity", "%r,0,0" % U], U
+    return bc, one + ["-particle_angular_velocity", "0,%r,0" % (U / A)], U
 
 
-def pair_file(out, eps):
+def pair_file(out, eps, v):
+    """Two spheres of infinite mass approaching each other along x, each at v/2, gap SHRINK eps a."""
     os.makedirs(out, exist_ok=True)
     f = os.path.join(out, "pair.csv")
-    x0 = 2 - A - eps * A / 2
+    gap = SHRINK * eps * A
+    x0 = 2 - A - gap / 2
     with open(f, "w") as o:
         o.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n")
-        o.write("0,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0, A, U / 2))
-        o.write("1,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0 + 2 * A + eps * A, A, -U / 2))
+        o.write("0,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0, A, v / 2))
+        o.write("1,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0 + 2 * A + gap, A, -v / 2))
     return f
 
 
-def calib_value(mode, row, resolved=True):
+def calib_value(mode, row, speed, resolved=True):
     """Normalised resistance from a particle_0.csv row: the resolved force (fx..) or the correction (fcx..)."""
     f = "f" if resolved else "fc"
     t = "th" if resolved else "t"
     if mode == "normal":
-        return row[f + "z"] / (6 * math.pi * MU * A * U)
+        return row[f + "z"] / (6 * math.pi * MU * A * speed)
     if mode in ("pair", "parallel"):
-        return -row[f + "x"] / (6 * math.pi * MU * A * U)
-    return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (U / A))
+        return -row[f + "x"] / (6 * math.pi * MU * A * speed)
+    return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
 def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0):
-    """Resolved run (lub none: the fluid) or DEM-only correction (lub blcm/llcm) at d/dx r."""
+    """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
+    or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r."""
     n = 4 * r
-    bc, one = calib_geometry(mode, eps)
+    bc, one, speed = calib_geometry(mode, eps)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
     out = "/tmp/vp_col_cal_" + tag
-    part = ["-particles_file", pair_file(out + "_in", eps), "-particles_fixed"] if one is None else one
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
-              "-contact_roughness", 1e-4] + bc + part
+              "-contact_roughness", 1e-4] + bc
     if lub == "none":
-        rows = run(out, *common, "-time_dt", 0.15, "-time_final", 12, "-lub_model", "none", case="none")
-        drift = abs(calib_value(mode, rows[-1]) / calib_value(mode, rows[-14]) - 1)
-        if drift > 2e-3:
-            print("calibration: %s eps %g d/dx %d not steady: %.2g change over the last 2 s" % (mode, eps, r, drift))
-        return calib_value(mode, rows[-1])
-    rows = run(out, *common, "-fluid_off", "-time_dt", 1e-3, "-time_max_steps", 1, "-lub_model", lub,
+        dt = 0.5 / r ** 2 / MU
+        part = ["-particles_file", pair_file(out + "_in", eps, speed), "-particles_fixed"] if one is None else one
+        rows = run(out, *common, *part, "-time_dt", dt, "-time_final", RELAX, "-lub_model", "none", case="none")
+        return calib_value(mode, rows[-1], speed)
+    # The correction at the final gap: the same spheres placed there (DEM only, one evaluation).
+    part = one
+    if one is None:
+        part = ["-particles_file", pair_file(out + "_in", eps / SHRINK, speed), "-particles_fixed"]
+    elif mode == "normal":
+        part = ["-particle_position", "2,2,%r" % (A * (1 + eps)), "-particle_fixed", "-particle_velocity", "0,0,%r" % -speed]
+    rows = run(out, *common, *part, "-fluid_off", "-time_dt", 1e-9, "-time_max_steps", 1, "-lub_model", lub,
                "-lub_activation_cells", cells, "-lub_llcm_r0", r0, np=1, case="none")
-    return calib_value(mode, rows[0], resolved=False)
+    return calib_value(mode, rows[0], speed, resolved=False)
+
+
+ACTIVATIONS = [0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5]  # cells, for the scan
+DEFAULT_CELLS = 0.2  # kDefaultActivationCells (include/vp/interactions/LubricationModel.hpp)
 
 
 def calibration():
-    res_list = {"normal": [8, 12, 16, 24], "pair": [8, 12, 16], "parallel": [8, 12, 16], "rotation": [8, 12, 16]}
+    fine = [16] if "--fine" in sys.argv else []
+    res_list = {m: [8, 12] + fine for m in MODES}
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
     for ax, (mode, (exact, title)) in zip(axes.flat, MODES.items()):
         ex = [exact(e) for e in GAPS]
         ax.loglog(GAPS, ex, "k-", lw=2, label="exact")
         for k, r in enumerate(res_list[mode]):
             resolved = [calib_run(mode, e, r) for e in GAPS]
-            llcm = [calib_run(mode, e, r, "llcm") for e in GAPS]
-            blcm = [calib_run(mode, e, r, "blcm") for e in GAPS]
             c = "C%d" % k
             ax.loglog(GAPS, resolved, "o--", color=c, mfc="none", label="resolved, d/dx %d" % r)
-            ax.loglog(GAPS, [x + y for x, y in zip(resolved, llcm)], "s-", color=c, label="+ LLCM, d/dx %d" % r)
-            for e, x, y, z, q in zip(GAPS, ex, resolved, llcm, blcm):
+            for cells, mark in ((DEFAULT_CELLS, "s-"), (1.5, "^:")):
+                total = [x + calib_run(mode, e, r, "llcm", cells) for e, x in zip(GAPS, resolved)]
+                ax.loglog(GAPS, total, mark, color=c, ms=4, label="+ LLCM from %g cells, d/dx %d" % (cells, r))
+            for e, x, y in zip(GAPS, ex, resolved):
+                llcm = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
+                blcm = calib_run(mode, e, r, "blcm", DEFAULT_CELLS)
                 print("calibration: %-8s d/dx %2d eps %5g  exact %8.4f  resolved %8.4f (%+6.1f %%)  + LLCM %8.4f (%+6.1f %%)"
-                      "  + BLCM %8.4f (%+6.1f %%)  [activation 1.5 cells = eps %.3f]" %
-                      (mode, r, e, x, y, 100 * (y / x - 1), y + z, 100 * ((y + z) / x - 1), y + q, 100 * ((y + q) / x - 1),
-                       1.5 / r / A), flush=True)
+                      "  + BLCM %8.4f (%+6.1f %%)  [activation %g cells = eps %.3f]" %
+                      (mode, r, e, x, y, 100 * (y / x - 1), y + llcm, 100 * ((y + llcm) / x - 1), y + blcm,
+                       100 * ((y + blcm) / x - 1), DEFAULT_CELLS, DEFAULT_CELLS / r / A), flush=True)
+            # Activation scan: error of resolved + LLCM over eps in [0.01, 0.5] for each activation.
+            for cells in ACTIVATIONS:
+                errs = ["%+4.0f" % (100 * ((y + calib_run(mode, e, r, "llcm", cells)) / x - 1))
+                        for e, x, y in zip(GAPS, ex, resolved) if e <= 0.5]
+                print("calibration scan: %-8s d/dx %2d activation %4g cells: error %% at eps 0.01..0.5: %s" %
+                      (mode, r, cells, " ".join(errs)), flush=True)
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("gap eps = h / a")
         ax.legend(fontsize=6)
-    fig.suptitle("Resolved force and resolved + LLCM (activation 1.5 cells) vs exact Stokes resistances")
+    fig.suptitle("Resolved force and resolved + LLCM vs exact Stokes resistances (box 4 d)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_calibration.png"), dpi=120)
-
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"

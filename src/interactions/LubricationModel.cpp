@@ -18,7 +18,9 @@ const char* lubModelName(LubModel m)
 
 void LubricationParams::complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax)
 {
-  if (activation == 0 && activationCells == 0 && coupled) activationCells = 1.5;
+  // The resolved squeeze follows the exact Stokes resistance down to gaps of a fraction of a cell
+  // (docs/collisions.md, calibration): the correction starts there.
+  if (activation == 0 && activationCells == 0 && coupled) activationCells = kDefaultActivationCells;
   gridGap_ = activationCells * cellSize;
   if (saturation == 0) saturation = saturationFromRoughness;
   if (model == LubModel::None) return;

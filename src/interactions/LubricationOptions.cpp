@@ -18,7 +18,7 @@ PetscErrorCode registerOptions(MPI_Comm comm, LubricationParams& p, char* model,
                              "Gap eps_act = h/a (a: the smaller radius of the pair) below which the unresolved force is added (0: -lub_activation_cells)",
                              "", p.activation, &p.activation, nullptr));
   PetscCall(PetscOptionsReal("-lub_activation_cells",
-                             "Activation gap in grid cells, the same for every pair (0: 1.5 in coupled runs)",
+                             "Activation gap in grid cells, the same for every pair (0: 0.2 in coupled runs)",
                              "", p.activationCells, &p.activationCells, nullptr));
   PetscCall(PetscOptionsReal("-lub_saturation",
                              "Gap eps_sat = h/a below which the force is held constant (0: the contact roughness)",
@@ -54,7 +54,7 @@ LubricationParams readLubricationOptions(MPI_Comm comm)
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     fail("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
   if (!(p.activationCells >= 0 && std::isfinite(p.activationCells)))
-    fail("-lub_activation_cells", "must be >= 0 (0: 1.5 cells in coupled runs)", p.activationCells);
+    fail("-lub_activation_cells", "must be >= 0 (0: 0.2 cells in coupled runs)", p.activationCells);
   if (p.activation > 0 && p.activationCells > 0)
     fail("-lub_activation_cells", "give either -lub_activation or -lub_activation_cells", p.activationCells);
   if (!(p.saturation >= 0 && std::isfinite(p.saturation)))

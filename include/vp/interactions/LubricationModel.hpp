@@ -13,13 +13,17 @@
 namespace vp {
 
 enum class LubModel { None, Blcm, Llcm };
+
+// Default activation gap of coupled runs, in grid cells (calibrated: docs/collisions.md).
+constexpr double kDefaultActivationCells = 0.2;
 const char* lubModelName(LubModel m);
 
 struct LubricationParams {
   LubModel model = LubModel::None;
   // eps_act = h_act / a, per pair radius. 0: the gap activationCells grid cells instead.
   double activation = 0;
-  // h_act in grid cells (when activation is 0); 0: set by complete() (1.5 in coupled runs).
+  // h_act in grid cells (when activation is 0); 0: set by complete() (kDefaultActivationCells in
+  // coupled runs).
   double activationCells = 0;
   // eps_sat = h_sat / a: the force is held constant below it. 0 means "set by the caller" to the
   // contact roughness gap (2 * -contact_roughness, which is a fraction of the diameter).
@@ -28,7 +32,7 @@ struct LubricationParams {
 
   // Sets the defaults where the options left 0 and checks the complete set for spheres up to
   // radius rmax (throws InputError naming the option). coupled: a fluid is solved (the activation
-  // then defaults to 1.5 cells; DEM-only runs must give it).
+  // then defaults to kDefaultActivationCells; DEM-only runs must give it).
   void complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax);
   // Activation gap h_act [m] of a pair whose smaller radius is a.
   double activationGap(double a) const { return activation > 0 ? activation * a : gridGap_; }
