@@ -270,7 +270,8 @@ void DemSolver::substep(double dt)
   // the predicted end-of-step velocities v^n + dt a^n (sent to ghosts), which makes the velocity-
   // dependent damping second order (at the half-step velocity restitution errs by 1-3 % at 50
   // steps per contact).
-  // Fixed particles have zero inverse mass and inertia and zero velocities: no branch needed.
+  // Fixed particles have zero inverse mass and inertia: their velocities stay as given (a prescribed
+  // motion, at rest by default), with no branch.
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
     const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
