@@ -2,13 +2,14 @@
 """Collision validation (docs/collisions.md), plots into docs/validation/:
   restitution: e(St) of a steel sphere (d = 3 mm, rho_p/rho 8.34) driven onto a wall, St 5-1000 by
                the viscosity, against e_dry exp(-35/St); -contact_hydro keep (and limit at 3 St)
+  timestep:    e at St 27 against the fluid step (CFL 0.5, 0.25, 0.1) with the resolved force kept or limited
   gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
   oblique:     dry (Foerster glass, DEM only) and wet (Joseph & Hunt steel and glass in glycerol-water)
                impacts, Psi_2 and Psi_out against Psi_in with the rigid-body lines
   calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c and sub-steps
-usage: collisions.py [restitution|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse]
+usage: collisions.py [restitution|timestep|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse] [--fine]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
@@ -17,7 +18,7 @@ from common import plt, root, ranks, vpsolve, outdir
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
 E_DRY = 0.97
-HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it
+HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it (the default)
 STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
 
 
@@ -56,7 +57,7 @@ def impact(rows, a, axis="z", gap_in=0.1):
     return -crossing(down), (crossing(up) if up is not None else 0.0), True
 
 
-def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
+def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
     """Steel sphere of diameter d at nominal St (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d
     box, released 3 d above the floor at 0.585 m/s. Returns (St at impact, e, u_in)."""
     r = r or res
@@ -64,7 +65,7 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None):
     mu = STEEL * u * d / (9 * st)
     h = d / r
     n = 6 * r
-    dt = 0.5 * h / u  # CFL 0.5 at the release speed
+    dt = cfl * h / u  # CFL at the release speed
     out = "/tmp/vp_col_%s" % (label or "e_st%g_%s_r%d_d%g" % (st, hydro, r, d))
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
@@ -107,6 +108,18 @@ def restitution():
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "restitution_stokes.png"), dpi=120)
+
+
+def timestep():
+    """e at nominal St 40 (impact St about 27), d/dx 8, contact time fixed at 6.4 ms, CFL 0.5, 0.25 and
+    0.1: the rebound's dependence on the fluid step, with the resolved force kept or limited."""
+    for hydro in ("keep", "limit"):
+        for cfl in (0.5, 0.25, 0.1):
+            out = restitution_run(40, hydro, r=8, cfl=cfl, extra=["-contact_tc_steps", 0, "-contact_tc", 6.4e-3],
+                                  label="dt_%s_cfl%g" % (hydro, cfl))
+            print("timestep: -contact_hydro %-5s CFL %4g: impact St %.1f, e/e_dry %.3f (exp(-35/St) %.3f)" %
+                  (hydro, cfl, out[0], out[1] / E_DRY, math.exp(-35 / out[0])) if out else
+                  "timestep: -contact_hydro %s CFL %g: no contact" % (hydro, cfl), flush=True)
 
 
 # --- Gondret's set-ups: trajectories ------------------------------------------------------------------
@@ -405,6 +418,6 @@ def calibration():
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "gondret", "oblique", "calibration", "sensitivity"):
+    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "sensitivity"):
         if what in (name, "all") and name in globals():
             globals()[name]()

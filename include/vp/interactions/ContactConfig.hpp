@@ -24,7 +24,7 @@ struct ContactConfig {
   double ktRatio = 2.0 / 7.0; // k_t / k_n (without xi_t)
   double gtRatio = 0.5;       // gamma_t / gamma_n (without xi_t)
   double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
-  ContactHydro hydro = ContactHydro::Keep;
+  ContactHydro hydro = ContactHydro::Limit;  // measured: docs/collisions.md
 
   // Throws InputError naming the option and the valid range. particles: a stiffness is required.
   void validate(bool particles) const;
