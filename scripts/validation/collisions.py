@@ -208,9 +208,10 @@ def oblique_dry():
 
 
 def oblique_wet(material):
-    """Joseph & Hunt: d = 12.7 mm, steel in 45 % or glass in 33 % glycerol-water."""
+    """Joseph & Hunt: d = 12.7 mm, steel and glass in 78 % glycerol-water (the less viscous mixtures put
+    the impact Reynolds number near 1000, a cell Reynolds number the central advection cannot run)."""
     d = 0.0127
-    rho_p, rho, mu, mu_c = {"steel": (7780, 1113, 4.5e-3, 0.02), "glass": (2540, 1081, 2.5e-3, 0.15)}[material]
+    rho_p, rho, mu, mu_c = {"steel": (7780, 1203, 0.048, 0.02), "glass": (2540, 1203, 0.048, 0.15)}[material]
     vn = 0.3
     out = []
     r = min(res, 12)
