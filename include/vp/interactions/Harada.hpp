@@ -1,6 +1,6 @@
 #pragma once
 // Point-particle model of a sphere moving normal to a plane wall (Harada et al. 2001, "Model H";
-// PHYSICS.md 4.4), the reference trajectory for the resolved simulations. The wall is y = 0, the
+// docs/lubrication.md section 5), the reference trajectory for the resolved simulations. The wall is y = 0, the
 // sphere centre at height y > a, velocity v = dy/dt. Forces along y:
 //   buoyant weight  (m - m_f) g
 //   drag            -3 pi mu d (1 + 0.15 Re^0.687) v                 (Schiller & Naumann)
@@ -8,7 +8,7 @@
 //   added mass      -(m' dv/dt + (1/2) (dm'/dt) v),  m' = (2/3) pi rho a^3 C(eps) (image series)
 //   history         -6 a^2 sqrt(pi rho mu) int_0^t v'(s) / sqrt(t - s) ds  (Basset, from rest)
 //   contact         k_n delta - gamma_n v while delta = h_col - h > 0 (linear spring-dashpot,
-//                   PHYSICS.md 3, m* = m, roughness gap h_col)
+//                   docs/particles.md, m* = m, roughness gap h_col)
 // Each term can be switched off. Time stepping: semi-implicit Euler with fixed dt; every term
 // linear in v^{n+1} (drag with lagged Re, lubrication, added mass, the newest Basset increment,
 // contact damping) is implicit, position-dependent terms are taken at y^n, then y^{n+1} = y^n +

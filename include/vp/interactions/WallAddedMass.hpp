@@ -1,6 +1,6 @@
 #pragma once
 // Added mass of a sphere moving normal to a plane wall, from the image series (Harada et al. 2001,
-// PHYSICS.md 4.4): m' = (2/3) pi rho a^3 C(eps) with
+// docs/lubrication.md section 5): m' = (2/3) pi rho a^3 C(eps) with
 //   C = 1 + 3 sum_{i>=0} prod_{k=0..i} (a/f_k)^3,   f_0 = 2a(1 + eps),  f_k = f_0 - a^2/f_{k-1}.
 // f_k is the distance from the centre of the k-th image dipole. The cube is required for a
 // dimensionless series (the seed text omits it); the first term is the classical 3/8 (a/l)^3 at

@@ -16,7 +16,7 @@ namespace vp {
 // set by the DEM's force loop for the next kicks.
 enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };
 
-// Everything one particle carries when it changes owner (ARCHITECTURE.md 6 sync policy).
+// Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition).
 struct ParticleRecord {
   std::int64_t id = 0;
   double radius = 0, density = 0;
