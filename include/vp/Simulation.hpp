@@ -1,6 +1,6 @@
 #pragma once
 // Owns everything of a run: grid, fluid, output. setUp happens in the constructor; advance() does
-// one time step (ARCHITECTURE.md 2), run() steps to -time_final or -time_max_steps with output,
+// one time step (docs/fluid.md and docs/coupling.md), run() steps to -time_final or -time_max_steps with output,
 // diagnostics and progress lines.
 #include "vp/core/Config.hpp"
 #include "vp/coupling/Penalization.hpp"
@@ -35,7 +35,7 @@ public:
 
 private:
   void output();
-  void checkpoint();  // checkpoint_<step>.h5 (ARCHITECTURE.md 9)
+  void checkpoint();  // checkpoint_<step>.h5 (docs/outputs.md)
   // Continues from -restart: fluid state, particles, counters, output lists.
   void restore(const CheckpointReader& cp);
   FluidState fluidState() const;  // the vectors a checkpoint holds

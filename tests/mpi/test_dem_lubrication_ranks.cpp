@@ -10,10 +10,7 @@ TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, mo
 {
   Config c = boxConfig({0, 0, 0}, {0.04, 0.01, 0.01}, {12, 2, 2});
   c.fluid.mu = 0.05;
-  ParticleConfig pc = contactConfig(1e-3, 0.9, 0.25);
-  pc.contact.roughness = 5e-4;
-  pc.lubrication.model = LubModel::Blcm;
-  pc.lubrication.activation = 0.5;
+  ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 5e-4, LubModel::Blcm, 0.5);
   const double a = 1e-3;
   // Approaching along x and sliding past each other in y, spinning: squeeze plus shear torques.
   const std::vector<ParticleRecord> p = {sphere(1, {0.02 - a * 1.2, 0.005, 0.005}, a, 1000, {0.01, 0.002, 0}, {0, 0, 5}),

@@ -54,7 +54,7 @@ TEST_CASE("Sliding and sticking contacts across rank boundaries equal the one-ra
 
 TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[mpi][collapse]")
 {
-  // The benchmark case (ARCHITECTURE.md 10; shared/benchmarks/dem): 2000 settled spheres,
+  // The benchmark case (benchmarks/dem): 2000 settled spheres,
   // kn = 200 N/m, e = 0.9, mu = 0.25, dt = 3.6e-6 s, walls all round.
   Config c = boxConfig({0, 0, 0}, {0.15, 0.0105, 0.04}, {4, 32, 4});
   c.gravity = {0, 0, -9.81};

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checkpoint/restart end to end (ARCHITECTURE.md 9): a run of S steps with checkpoints is
+"""Checkpoint/restart end to end (docs/outputs.md): a run of S steps with checkpoints is
 restarted from the checkpoint at step K into the same output directory, as after a crash.
 Checks: the time series and the snapshot lists continue without gaps or duplicates; every
 diagnostics and particle row equals the uninterrupted run's to --tol (0: bitwise, same rank count)

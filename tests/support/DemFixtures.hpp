@@ -31,6 +31,18 @@ inline ParticleConfig contactConfig(double tc, double restitution, double fricti
   return pc;
 }
 
+// A contact law with a roughness gap (fraction of the diameter) and a lubrication model acting from
+// the gap eps_act = activation (fraction of the radius); the saturation is the roughness gap.
+inline ParticleConfig lubricatedConfig(double tc, double restitution, double roughness, LubModel model,
+                                       double activation)
+{
+  ParticleConfig pc = contactConfig(tc, restitution, 0.25);
+  pc.contact.roughness = roughness;
+  pc.lubrication.model = model;
+  pc.lubrication.activation = activation;
+  return pc;
+}
+
 inline ParticleRecord sphere(std::int64_t id, Vec3 x, double radius, double density, Vec3 v = {}, Vec3 w = {})
 {
   ParticleRecord r;

@@ -97,10 +97,7 @@ double lubricatedRebound(double tc)
   Config c = boxConfig({0, 0, 0}, {0.02, 0.02, 0.04}, {4, 4, 8});
   const double a = 1.5e-3, rhoP = 7800, u = 0.585;
   c.fluid.mu = rhoP * u * 2 * a / (9 * 152);
-  ParticleConfig pc = contactConfig(tc, 0.97, 0.25);
-  pc.contact.roughness = 2e-4;
-  pc.lubrication.model = LubModel::Llcm;
-  pc.lubrication.activation = 0.1;
+  ParticleConfig pc = lubricatedConfig(tc, 0.97, 2e-4, LubModel::Llcm, 0.1);
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
   DemSolver dem(grid, c, pc, {sphere(0, {0.01, 0.01, a * 1.1}, a, rhoP, {0, 0, -u})});
   const ParticleStore& s = dem.particles();
@@ -134,10 +131,7 @@ TEST_CASE("The saturated lubrication dashpot bounds the DEM sub-step", "[contact
 {
   Config c = boxConfig({0, 0, 0}, {0.01, 0.01, 0.01}, {2, 2, 2});
   c.fluid.mu = 0.3;
-  ParticleConfig pc = contactConfig(1e-3, 0.9, 0.25);
-  pc.contact.roughness = 5e-4;
-  pc.lubrication.model = LubModel::Blcm;
-  pc.lubrication.activation = 0.1;
+  ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 5e-4, LubModel::Blcm, 0.1);
   const double a = 1e-3, m = 1000 * 4.0 / 3.0 * M_PI * a * a * a;
   const double resistance = 6 * M_PI * 0.3 * a * (1 / 1e-3 - 1 / 0.1);  // wall, saturated at eps 1e-3
   const double limit = 0.5 * m / resistance;
@@ -170,10 +164,7 @@ TEST_CASE("A free-slip wall resists a squeeze four times less than a no-slip wal
     c.bc.type[4] = floor;
     c.gravity = {0, 0, -9.81};
     c.fluid.mu = 0.3;
-    ParticleConfig pc = contactConfig(1e-3, 0.9, 0.25);
-    pc.contact.roughness = 2.5e-3;
-    pc.lubrication.model = LubModel::Blcm;
-    pc.lubrication.activation = 0.1;
+    ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 2.5e-3, LubModel::Blcm, 0.1);
     const double a = 1e-3;
     Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
     DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});

@@ -1,6 +1,6 @@
 // Dry impacts through the whole DEM path (DemSolver on one rank): restitution and contact duration
 // of normal sphere-wall and sphere-sphere impacts, and oblique sphere-wall impacts against
-// rigid-body theory (PHYSICS.md 3 and 5).
+// rigid-body theory (docs/particles.md, docs/collisions.md).
 #include "../support/DemFixtures.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -21,12 +21,9 @@ std::vector<Crossing> approach(LubModel model, const std::vector<double>& eps, d
   Config c = boxConfig({0, 0, 0}, {0.01, 0.01, 0.01}, {2, 2, 2});
   c.gravity = {0, 0, -g};
   c.fluid.mu = mu;
-  ParticleConfig pc = contactConfig(1e-3, 0.9, 0.25);
   // Saturation 2 * 2.5e-3 = 5e-3 of the radius, below the gaps probed; the saturated dashpot then
   // allows sub-steps up to m / (2 c) = 1.9e-6 s.
-  pc.contact.roughness = 2.5e-3;
-  pc.lubrication.model = model;
-  pc.lubrication.activation = 0.1;
+  const ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 2.5e-3, model, 0.1);
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
   DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});
   const ParticleStore& s = dem.particles();

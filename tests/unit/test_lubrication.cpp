@@ -325,11 +325,22 @@ TEST_CASE("Lubrication pair forces: swap antisymmetry and angular momentum balan
   }
 }
 
-TEST_CASE("Lubrication is zero above the activation gap, continuous at it, constant below saturation", "[lub]")
+namespace {
+
+// eps_act 0.1 and eps_sat 1e-3 of the smaller radius; the model is set by each loop.
+LubricationParams gapParams()
 {
   LubricationParams p;
   p.activation = 0.1;
   p.saturation = 1e-3;
+  return p;
+}
+
+} // namespace
+
+TEST_CASE("Lubrication is zero above the activation gap, continuous at it, constant below saturation", "[lub]")
+{
+  LubricationParams p = gapParams();
   for (LubModel model : {LubModel::Blcm, LubModel::Llcm})
     for (double ratio : kRatios) {
       p.model = model;
@@ -398,9 +409,7 @@ TEST_CASE("BLCM in a pair-loop integration: quasi-steady approach under a consta
 
 TEST_CASE("Hand-off: no lubrication once the surfaces touch, saturated resistance just above", "[lub]")
 {
-  LubricationParams p;
-  p.activation = 0.1;
-  p.saturation = 1e-3;
+  LubricationParams p = gapParams();
   for (LubModel model : {LubModel::Blcm, LubModel::Llcm})
     for (double ratio : kRatios) {
       p.model = model;

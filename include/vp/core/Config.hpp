@@ -54,7 +54,7 @@ struct OutputConfig {
   bool files = true;                       // false: no files at all (library use in tests)
 };
 
-// Checkpoint/restart (ARCHITECTURE.md 9, docs/outputs.md).
+// Checkpoint/restart (docs/outputs.md).
 struct CheckpointConfig {
   std::string restart;                     // -restart: continue from this checkpoint file
   int every = 0;                           // steps between checkpoints (0: none)

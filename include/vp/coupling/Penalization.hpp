@@ -1,5 +1,5 @@
 #pragma once
-// Volume penalization of the particles (ARCHITECTURE.md 7): a mask chi in [0, 1] and the solid
+// Volume penalization of the particles (docs/coupling.md): a mask chi in [0, 1] and the solid
 // velocity u_s = U + Omega x r on every owned velocity face, built from owned and ghost particles.
 // The term chi lambda (u_s - u) is applied implicitly inside the predictor's viscous solve
 // (Projection::predict with theta = chi lambda dt), before the projection; see docs/coupling.md for

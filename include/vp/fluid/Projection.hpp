@@ -1,5 +1,5 @@
 #pragma once
-// One fluid step of the incremental scalar projection (PHYSICS.md 1, ARCHITECTURE.md 4):
+// One fluid step of the incremental scalar projection (docs/fluid.md, time step):
 //   du = u* - u^n:  (I - nu dt/2 L) du = dt [ -(AB2 N) + nu L u^n - grad p^n / rho + f ]
 //   A psi = -div u*  (A = -lap_h),  u = u* - grad psi,  p^{n+1} = p^n + rho psi / dt
 // AB2 with variable steps (Euler on the first step), Crank-Nicolson diffusion. The pressure is the

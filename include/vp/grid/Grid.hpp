@@ -1,7 +1,7 @@
 #pragma once
 // The uniform 3-D grid and its domain decomposition. One decomposition for every field and for the
 // particles: the cell-centred DMDA (pressure) decides it, the face DMDAs (velocity) copy its
-// ownership ranges. Velocity face i-1/2 of cell i is stored at index i (see ARCHITECTURE.md 3).
+// ownership ranges. Velocity face i-1/2 of cell i is stored at index i (see docs/fluid.md, grid).
 #include "vp/core/Config.hpp"
 #include <petscdmda.h>
 

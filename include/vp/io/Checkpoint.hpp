@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoint/restart (ARCHITECTURE.md 9, docs/outputs.md). checkpoint_<step 6 digits>.h5 holds all
+// Checkpoint/restart (docs/outputs.md). checkpoint_<step 6 digits>.h5 holds all
 // an exact continuation needs: the fluid state (face velocity, pressure, the previous step's
 // convection term, the last pressure increment, all in natural DMDA order so that a restart may use
 // another number of ranks), every particle with its contact springs and last-sub-step forces, and

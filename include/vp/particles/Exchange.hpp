@@ -1,5 +1,5 @@
 #pragma once
-// Parallel ownership of particles (ARCHITECTURE.md 6): the rank whose cell-DMDA box contains a
+// Parallel ownership of particles (docs/particles.md, parallel decomposition): the rank whose cell-DMDA box contains a
 // particle's centre owns it. migrate() hands particles that left the box to the neighbour (with
 // their contact history); createGhosts() sends copies of particles within the halo to the 26
 // neighbours (periodic images shifted); updateGhosts() refreshes the ghosts' x, v, omega, q.
