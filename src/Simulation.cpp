@@ -102,7 +102,8 @@ void Simulation::restore(const CheckpointReader& cp)
 
 FluidState Simulation::fluidState() const
 {
-  return {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement()};
+  return {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement(),
+          fluid_->velocityIncrement()};
 }
 
 void Simulation::checkpoint()

@@ -1,14 +1,13 @@
 #include "vp/fluid/PressureSolver.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/OptionDefaults.hpp"
+#include "vp/fluid/FftPoisson.hpp"
 #include <algorithm>
 #include <string>
 
 namespace vp {
 
 namespace {
-
-// Sets an option default unless the user gave the option.
 
 // Assembles -lap_h on whatever level DM the KSP hands over (PCMG calls it on every coarse level).
 PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
@@ -85,9 +84,25 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
   PetscBool set;
   VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-pc_type", pc, sizeof pc, &set));
   std::string pcType = pc;
-  setOptionDefault("-pressure_ksp_type", "cg");
-  setOptionDefault("-pressure_ksp_norm_type", "unpreconditioned");
-  setOptionDefault("-pressure_ksp_rtol", "1e-10");  // max |div u| dx/|u| <= 1e-10 even after impulsive starts
+  registerFftPreconditioner();
+  if (pcType == "fft") {
+    int size;
+    MPI_Comm_size(grid.comm(), &size);
+    if (size > grid.n(2))
+      failOption("-pressure_pc_type", "fft splits the z axis into slabs, one z cell per rank at least: " +
+                                          std::to_string(size) + " ranks for " + std::to_string(grid.n(2)) +
+                                          " z cells; use at most " + std::to_string(grid.n(2)) +
+                                          " ranks or -pressure_pc_type hypre, pfmg or mg");
+  }
+  // fft is an exact inverse: one application (preonly) is the solve.
+  char ksp[64] = "";
+  VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-ksp_type", ksp, sizeof ksp, &set));
+  const bool direct = set ? std::string(ksp) == KSPPREONLY : pcType == "fft";
+  setOptionDefault("-pressure_ksp_type", direct ? KSPPREONLY : KSPCG);
+  if (!direct) {
+    setOptionDefault("-pressure_ksp_norm_type", "unpreconditioned");
+    setOptionDefault("-pressure_ksp_rtol", "1e-10");  // max |div u| dx/|u| <= 1e-10 even after impulsive starts
+  }
   if (pcType == "hypre") {
     setOptionDefault("-pressure_pc_type", "hypre");
     setOptionDefault("-pressure_pc_hypre_type", "boomeramg");
@@ -128,8 +143,21 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
     box_.hi[d] = grid.hi(d);
   }
   VP_CALL(KSPSetComputeOperators(ksp_, computeOperator, &box_));
-  VP_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
   VP_CALL(KSPSetFromOptions(ksp_));
+  PetscBool preonly;
+  VP_CALL(PetscObjectTypeCompare((PetscObject)ksp_, KSPPREONLY, &preonly));
+  direct_ = preonly;
+  VP_CALL(KSPSetInitialGuessNonzero(ksp_, direct_ ? PETSC_FALSE : PETSC_TRUE));
+  PC pcObj;
+  PetscBool fft;
+  VP_CALL(KSPGetPC(ksp_, &pcObj));
+  VP_CALL(PetscObjectTypeCompare((PetscObject)pcObj, "fft", &fft));
+  if (fft) {
+    // The weights of A = -V lap_h per axis (computeOperator).
+    double w[3];
+    for (int d = 0; d < 3; ++d) w[d] = grid.cellVolume() / (grid.h(d) * grid.h(d));
+    VP_CALL(PCFftSetWeights(pcObj, w));
+  }
   VP_CALL(KSPSetUp(ksp_));
   VP_CALL(MatNullSpaceCreate(grid.comm(), PETSC_TRUE, 0, nullptr, &nullSpace_));
   VP_CALL(DMCreateGlobalVector(grid.cellDM(), &work_));
@@ -154,6 +182,10 @@ int PressureSolver::solve(Vec b, Vec x, double atol)
   const double volume = grid_.cellVolume();
   VP_CALL(VecScale(b, volume));
   VP_CALL(MatNullSpaceRemove(nullSpace_, b));
+  if (direct_) {
+    VP_CALL(KSPSolve(ksp_, b, x));
+    return 1;
+  }
   // The previous solution is a good start for smooth flows, a bad one after an impulsive change
   // (e.g. a lid set in motion): keep it only if it beats zero.
   PetscReal bnorm, r0;

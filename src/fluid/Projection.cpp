@@ -49,17 +49,17 @@ Projection::Projection(const Grid& grid, const Config& cfg)
     diffusion_(grid, cfg.bc), pressure_(grid)
 {
   DM f = grid.faceDM(), c = grid.cellDM();
-  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_}) VP_CALL(DMCreateGlobalVector(f, v));
+  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &work_}) VP_CALL(DMCreateGlobalVector(f, v));
   for (Vec* v : {&p_, &div_, &psi_}) VP_CALL(DMCreateGlobalVector(c, v));
   VP_CALL(DMCreateLocalVector(f, &uL_));
   VP_CALL(DMCreateLocalVector(c, &pL_));
   VP_CALL(DMCreateLocalVector(c, &psiL_));
-  for (Vec v : {u_, N_, Nold_, L_, rhs_, du_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
+  for (Vec v : {u_, N_, Nold_, L_, rhs_, du_, work_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
 }
 
 Projection::~Projection()
 {
-  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
+  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &work_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
 }
 
 StepStats Projection::step(double dt)
@@ -100,10 +100,12 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
     if (theta) {
       // Penalization in the same implicit solve: rhs += theta (u_s - u^n), so that a steady state
       // satisfies chi lambda (u - u_s) = the other momentum terms exactly (Brinkman), for any dt.
-      VP_CALL(VecPointwiseMult(du_, theta, u_));
-      VP_CALL(VecAXPY(rhs_, -1.0, du_));
+      VP_CALL(VecPointwiseMult(work_, theta, u_));
+      VP_CALL(VecAXPY(rhs_, -1.0, work_));
       VP_CALL(VecAXPY(rhs_, 1.0, thetaUs));
     }
+    // The last increment, rescaled to this step, starts the solve (du is about dt du/dt).
+    if (dtOld_ > 0 && dt != dtOld_) VP_CALL(VecScale(du_, dt / dtOld_));
     st.velocityIterations = diffusion_.solve(0.5 * nu_ * dt, rhs_, du_, 1e-14 * std::max(uNorm, norm2(rhs_)), theta);
     VP_CALL(VecAXPY(u_, 1.0, du_));  // u*
   }

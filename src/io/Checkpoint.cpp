@@ -68,7 +68,7 @@ const char* const kRunAttribute = "run";  // step, time, dt_old, next_output_tim
 std::vector<std::pair<const char*, Vec>> named(const FluidState& f)
 {
   return {{"velocity", f.velocity}, {"pressure", f.pressure}, {"convection_old", f.convectionOld},
-          {"pressure_increment", f.pressureIncrement}};
+          {"pressure_increment", f.pressureIncrement}, {"velocity_increment", f.velocityIncrement}};
 }
 
 std::string list(const double* v, int n)

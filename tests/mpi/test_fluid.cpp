@@ -114,13 +114,17 @@ TEST_CASE("div of grad equals minus the assembled Poisson matrix", "[mpi][operat
   for (Vec* v : {&phi, &phiL, &grad, &gradL, &div, &Aphi}) VecDestroy(v);
 }
 
-TEST_CASE("the viscous matrix equals the face Laplacian with its wall ghost rules", "[mpi][operators]")
+TEST_CASE("the viscous operator equals the face Laplacian with its wall ghost rules", "[mpi][operators]")
 {
   Config c = mixedBox();
   c.bc.type[4] = BcType::Wall;  // no-slip at z low as well: edges next to two walls
   Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
+  const std::string kind = GENERATE(std::string("shell"), std::string("assembled"));
+  VP_CALL(PetscOptionsSetValue(nullptr, "-velocity_operator", kind.c_str()));
   DiffusionSolver ds(g, c.bc);
-  Vec u, uL, N, L, SLu;
+  VP_CALL(PetscOptionsClearValue(nullptr, "-velocity_operator"));
+  CHECK(ds.assembled() == (kind == "assembled"));
+  Vec u, uL, N, L, theta, Au, expect;
   VP_CALL(DMCreateGlobalVector(g.faceDM(), &u));
   VP_CALL(VecSetRandom(u, nullptr));
   {
@@ -138,7 +142,7 @@ TEST_CASE("the viscous matrix equals the face Laplacian with its wall ghost rule
   }
   VP_CALL(DMCreateLocalVector(g.faceDM(), &uL));
   VP_CALL(DMGlobalToLocal(g.faceDM(), u, INSERT_VALUES, uL));
-  for (Vec* v : {&N, &L, &SLu}) {
+  for (Vec* v : {&N, &L, &theta, &Au, &expect}) {
     VP_CALL(VecDuplicate(u, v));
     VP_CALL(VecSet(*v, 0));
   }
@@ -151,18 +155,38 @@ TEST_CASE("the viscous matrix equals the face Laplacian with its wall ghost rule
   VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), L, &l));
   VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), N, &n));
   VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), uL, &a));
-  VP_CALL(MatMult(ds.scaledLaplacian(), u, SLu));
-  VP_CALL(VecPointwiseDivide(SLu, SLu, ds.weights()));
-  VP_CALL(VecAXPY(SLu, -1.0, L));
+  // A u = S (1 + theta) u - a S L u with a random penalization theta >= 0.
+  const double alpha = 0.3;
+  VP_CALL(VecSetRandom(theta, nullptr));
+  ds.setOperator(alpha, theta);
+  VP_CALL(MatMult(ds.operatorMatrix(), u, Au));
+  VP_CALL(VecPointwiseMult(expect, theta, u));
+  VP_CALL(VecAXPY(expect, 1.0, u));
+  VP_CALL(VecAXPY(expect, -alpha, L));
+  VP_CALL(VecPointwiseMult(expect, expect, ds.weights()));
+  VP_CALL(VecAXPY(Au, -1.0, expect));
   PetscReal diff, scale;
-  VP_CALL(VecNorm(SLu, NORM_INFINITY, &diff));
+  VP_CALL(VecNorm(Au, NORM_INFINITY, &diff));
   VP_CALL(VecNorm(L, NORM_INFINITY, &scale));
-  CHECK(diff <= 1e-12 * scale);
-  // S L is symmetric, which is what lets CG solve the Crank-Nicolson system.
+  CHECK(diff <= 1e-12 * alpha * scale);
+  // The operator is symmetric (what lets CG solve the Crank-Nicolson system), and the diagonal the
+  // Jacobi preconditioner uses is its true diagonal.
+  Mat explicitA;
+  VP_CALL(MatComputeOperator(ds.operatorMatrix(), MATAIJ, &explicitA));
   PetscBool symmetric;
-  VP_CALL(MatIsSymmetric(ds.scaledLaplacian(), 1e-12, &symmetric));
+  VP_CALL(MatIsSymmetric(explicitA, 1e-12, &symmetric));
   CHECK(symmetric);
-  for (Vec* v : {&u, &uL, &N, &L, &SLu}) VecDestroy(v);
+  Vec d0, d1;
+  VP_CALL(VecDuplicate(u, &d0));
+  VP_CALL(VecDuplicate(u, &d1));
+  VP_CALL(MatGetDiagonal(explicitA, d0));
+  VP_CALL(MatGetDiagonal(ds.operatorMatrix(), d1));
+  VP_CALL(VecAXPY(d1, -1.0, d0));
+  VP_CALL(VecNorm(d1, NORM_INFINITY, &diff));
+  VP_CALL(VecNorm(d0, NORM_INFINITY, &scale));
+  CHECK(diff <= 1e-13 * scale);
+  MatDestroy(&explicitA);
+  for (Vec* v : {&u, &uL, &N, &L, &theta, &Au, &expect, &d0, &d1}) VecDestroy(v);
 }
 
 TEST_CASE("every projection leaves max |div u| below 1e-10 |u|/dx", "[mpi][projection]")

@@ -13,6 +13,8 @@ vp_bad_input(one_sided_periodic 1 "option -bc_xhi: periodic must be set on both 
 vp_bad_input(negative_density 1 "option -fluid_rho: must be > 0, got -1" -fluid_rho -1)
 vp_bad_input(zero_viscosity 1 "option -fluid_mu: must be > 0, got 0" -fluid_mu 0)
 vp_bad_input(too_many_ranks 3 "option -grid_n: 2,2,2 cells cannot be split over 3 ranks" -grid_n 2,2,2)
+vp_bad_input(fft_too_many_ranks 3 "option -pressure_pc_type: fft splits the z axis into slabs, one z cell per rank at least: 3 ranks for 2 z cells"
+             -grid_n 8,8,2 -pressure_pc_type fft)
 vp_bad_input(missing_options_file 2 "option -options_file: cannot open 'no/such/case.opts'" -options_file no/such/case.opts)
 vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -output_every -1)
 vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)
@@ -38,6 +40,10 @@ vp_case_run(cavity_gmg 2 --expect kinetic_energy=0.006614501615:1e-8
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -pressure_pc_type mg)
 vp_case_run(cavity_pfmg 1 --expect kinetic_energy=0.006614501615:1e-8
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -pressure_pc_type pfmg)
+vp_case_run(cavity_fft 2 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -pressure_pc_type fft)
+vp_case_run(cavity_assembled_viscous 1 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -velocity_operator assembled)
 
 # --- Particles (DEM) -------------------------------------------------------------------------
 set(VP_DEM_DATA ${CMAKE_CURRENT_SOURCE_DIR}/regression/data)

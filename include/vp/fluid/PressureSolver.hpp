@@ -4,7 +4,8 @@
 // zero normal gradient at walls (symmetric positive semi-definite; the constant null space is
 // attached). KSP prefix -pressure_. Defaults: CG + hypre BoomerAMG tuned for the 3-D 7-point
 // Laplacian (see docs/solvers.md); -pressure_pc_type mg (geometric multigrid on the DMDA with
-// rediscretised coarse levels) and -pressure_pc_type pfmg (hypre PFMG) also work. The operator
+// rediscretised coarse levels), -pressure_pc_type pfmg (hypre PFMG) and -pressure_pc_type fft (an
+// exact FFT inverse, FftPoisson.hpp; KSP preonly by default with it) also work. The operator
 // is assembled and the preconditioner set up once; each solve starts from the previous solution.
 #include "vp/grid/Grid.hpp"
 #include <petscksp.h>
@@ -35,6 +36,7 @@ private:
   MatNullSpace nullSpace_ = nullptr;
   Vec work_ = nullptr;
   bool userAtol_ = false;
+  bool direct_ = false;  // -pressure_ksp_type preonly (e.g. with the exact fft PC): no initial guess
   Box box_;
 };
 

@@ -43,9 +43,11 @@ public:
   Vec velocityLocal() const { return uL_; } // faceDM local, ghosts valid after finishStep()
   const Grid& grid() const { return grid_; }
   // The rest of the state an exact continuation needs (checkpoints): the last step's convection
-  // term and length (variable-step AB2) and the last pressure increment (the next solve's start).
+  // term and length (variable-step AB2) and the last pressure and velocity increments (the next
+  // solves' starts).
   Vec convectionOld() const { return Nold_; }
   Vec pressureIncrement() const { return psi_; }
+  Vec velocityIncrement() const { return du_; }  // the next viscous solve's start
   double previousDt() const { return dtOld_; }
   void setPreviousDt(double dt) { dtOld_ = dt; }
   PressureSolver& pressureSolver() { return pressure_; }
@@ -58,7 +60,7 @@ private:
   const Vec3 force_;
   DiffusionSolver diffusion_;
   PressureSolver pressure_;
-  Vec u_, p_, uL_, pL_, N_, Nold_, L_, rhs_, du_, div_, psi_, psiL_;
+  Vec u_, p_, uL_, pL_, N_, Nold_, L_, rhs_, du_, work_, div_, psi_, psiL_;
   double dtOld_ = 0;
   ops::FieldStats stats_;
 };

@@ -27,7 +27,7 @@ struct RunState {
 
 // The fluid vectors a checkpoint holds (faceDM, cellDM, faceDM, cellDM global vectors).
 struct FluidState {
-  Vec velocity, pressure, convectionOld, pressureIncrement;
+  Vec velocity, pressure, convectionOld, pressureIncrement, velocityIncrement;
 };
 
 class CheckpointWriter {
