@@ -20,6 +20,7 @@ for n in 64 128; do
     run -label boomeramg_petsc_default $petsc_boomeramg
     run -label gmg -pressure_pc_type mg
     run -label pfmg -pressure_pc_type pfmg
+    run -label fft -pressure_pc_type fft
   done
 done
 /usr/bin/python3 "$here/plot.py" "$out" "$here/poisson.png"

@@ -189,7 +189,7 @@ TEST_CASE("the viscous operator equals the face Laplacian with its wall ghost ru
   for (Vec* v : {&u, &uL, &N, &L, &theta, &Au, &expect, &d0, &d1}) VecDestroy(v);
 }
 
-TEST_CASE("every projection leaves max |div u| below 1e-10 |u|/dx", "[mpi][projection]")
+TEST_CASE("every projection leaves max |div u| below 1e-6 |u|/dx", "[mpi][projection]")
 {
   // A 3-D cavity: moving lid, walls, slip: every boundary kind at once.
   Config c = mixedBox();
@@ -208,7 +208,7 @@ TEST_CASE("every projection leaves max |div u| below 1e-10 |u|/dx", "[mpi][proje
     worst = std::max(worst, st.maxDivergence * hmin / umax);
   }
   INFO("worst relative divergence " << worst);
-  CHECK(worst <= 1e-10);
+  CHECK(worst <= 1e-6);  // the default tolerances' contract (docs/fluid.md)
   CHECK(sim.fluid().stats().kineticEnergy > 0);
 }
 
