@@ -1,7 +1,9 @@
 // harada: point-particle reference model of a sphere moving normal to a wall (Harada et al. 2001;
 // docs/lubrication.md). Writes particle_0.csv (the vpsolve particle columns plus the force terms)
 // into -output_dir. The wall is the plane y = 0; gravity and motion are along y.
+#include "vp/RunConfig.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include "vp/interactions/Harada.hpp"
 #include <petscsys.h>
 #include <cmath>
@@ -22,73 +24,45 @@ namespace {
 
 struct Run {
   HaradaParams model;
-  double position[3] = {0, 0.2159, 0};
-  double velocity[3] = {0, 0, 0};
-  double gravity[3] = {0, -9.781, 0};
+  Vec3 position{0, 0.2159, 0};
+  Vec3 velocity{0, 0, 0};
+  Vec3 gravity{0, -9.781, 0};
   double timeFinal = 3;
-  char outputDir[PETSC_MAX_PATH_LEN] = "output";
-  PetscInt outputEvery = 10;
+  std::string outputDir = "output";
+  int outputEvery = 10;
 };
 
-std::string str(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
+std::string str(double v) { return formatNumber(v); }
 
-[[noreturn]] void fail(const std::string& option, const std::string& what)
-{
-  throw InputError("option " + option + ": " + what);
-}
+[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
 
-void vector3(PetscInt n, PetscBool set, const char* option)
+Run readOptions()
 {
-  if (set && n != 3) fail(option, "needs 3 comma-separated values, got " + std::to_string(n));
-}
-
-PetscErrorCode registerOptions(Run& r)
-{
+  Run r;
   HaradaParams& m = r.model;
-  PetscInt n;
-  PetscBool set, flag;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(PETSC_COMM_WORLD, nullptr, "Harada point-particle model (defaults: the seed falling sphere)", "harada");
-  PetscCall(PetscOptionsReal("-fluid_rho", "Fluid density (kg/m^3)", "", m.fluidDensity, &m.fluidDensity, nullptr));
-  PetscCall(PetscOptionsReal("-fluid_mu", "Fluid dynamic viscosity (Pa s)", "", m.viscosity, &m.viscosity, nullptr));
-  PetscCall(PetscOptionsReal("-particle_radius", "Sphere radius a (m)", "", m.radius, &m.radius, nullptr));
-  PetscCall(PetscOptionsReal("-particle_density", "Sphere density (kg/m^3)", "", m.particleDensity, &m.particleDensity, nullptr));
-  n = 3;
-  PetscCall(PetscOptionsRealArray("-particle_position", "Initial centre x,y,z (m), default 0,0.2159,0; y is the height above the wall", "", r.position, &n, &set));
-  vector3(n, set, "-particle_position");
-  n = 3;
-  PetscCall(PetscOptionsRealArray("-particle_velocity", "Initial velocity 0,vy,0 (m/s), default 0,0,0", "", r.velocity, &n, &set));
-  vector3(n, set, "-particle_velocity");
-  n = 3;
-  PetscCall(PetscOptionsRealArray("-gravity", "Gravity 0,gy,0 (m/s^2) normal to the wall, default 0,-9.781,0", "", r.gravity, &n, &set));
-  vector3(n, set, "-gravity");
-  PetscCall(PetscOptionsReal("-contact_restitution", "Dry normal restitution xi_n in (0, 1]", "", m.restitution, &m.restitution, nullptr));
-  PetscCall(PetscOptionsReal("-contact_tc", "Contact duration t_c (s)", "", m.contactTime, &m.contactTime, nullptr));
-  PetscCall(PetscOptionsReal("-contact_roughness", "Roughness gap as a fraction of the diameter; lubrication and image series are held below it", "", m.roughness, &m.roughness, nullptr));
-  const struct { const char* name; const char* text; bool* value; } terms[] = {
-    {"-harada_drag", "Schiller-Naumann steady drag", &m.drag},
-    {"-harada_lubrication", "Lubrication force 6 pi mu a U / eps", &m.lubrication},
-    {"-harada_added_mass", "Added mass", &m.addedMass},
-    {"-harada_image_series", "Wall (image series) correction of the added mass", &m.imageSeries},
-    {"-harada_history", "Basset history force", &m.history},
-    {"-harada_contact", "Spring-dashpot contact with the wall", &m.contact},
-  };
-  for (const auto& t : terms) {
-    flag = *t.value ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscOptionsBool(t.name, t.text, "", flag, &flag, nullptr));
-    *t.value = flag;
-  }
-  PetscCall(PetscOptionsReal("-time_dt", "Time step (s); at most t_c/30 with contact", "", m.dt, &m.dt, nullptr));
-  PetscCall(PetscOptionsReal("-time_final", "End time (s)", "", r.timeFinal, &r.timeFinal, nullptr));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for particle_0.csv", "", r.outputDir, r.outputDir, sizeof r.outputDir, nullptr));
-  PetscCall(PetscOptionsInt("-output_every", "Steps between rows of particle_0.csv (>= 1)", "", r.outputEvery, &r.outputEvery, nullptr));
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
+  OptionGroup o("Harada point-particle model (defaults: the seed falling sphere)");
+  m.fluidDensity = o.real("-fluid_rho", m.fluidDensity, "Fluid density (kg/m^3)");
+  m.viscosity = o.real("-fluid_mu", m.viscosity, "Fluid dynamic viscosity (Pa s)");
+  m.radius = o.real("-particle_radius", m.radius, "Sphere radius a (m)");
+  m.particleDensity = o.real("-particle_density", m.particleDensity, "Sphere density (kg/m^3)");
+  r.position = o.vec3("-particle_position", r.position, "Initial centre x,y,z (m); y is the height above the wall");
+  r.velocity = o.vec3("-particle_velocity", r.velocity, "Initial velocity 0,vy,0 (m/s)");
+  r.gravity = o.vec3("-gravity", r.gravity, "Gravity 0,gy,0 (m/s^2) normal to the wall");
+  m.restitution = o.real("-contact_restitution", m.restitution, "Dry normal restitution xi_n in (0, 1]");
+  m.contactTime = o.real("-contact_tc", m.contactTime, "Contact duration t_c (s)");
+  m.roughness = o.real("-contact_roughness", m.roughness, "Roughness gap as a fraction of the diameter; lubrication and image "
+                                                          "series are held below it");
+  m.drag = o.flag("-harada_drag", m.drag, "Schiller-Naumann steady drag");
+  m.lubrication = o.flag("-harada_lubrication", m.lubrication, "Lubrication force 6 pi mu a U / eps");
+  m.addedMass = o.flag("-harada_added_mass", m.addedMass, "Added mass");
+  m.imageSeries = o.flag("-harada_image_series", m.imageSeries, "Wall (image series) correction of the added mass");
+  m.history = o.flag("-harada_history", m.history, "Basset history force");
+  m.contact = o.flag("-harada_contact", m.contact, "Spring-dashpot contact with the wall");
+  m.dt = o.real("-time_dt", m.dt, "Time step (s); at most t_c/30 with contact");
+  r.timeFinal = o.real("-time_final", r.timeFinal, "End time (s)");
+  r.outputDir = o.text("-output_dir", r.outputDir, "Directory for particle_0.csv");
+  r.outputEvery = o.integer("-output_every", r.outputEvery, "Steps between rows of particle_0.csv (>= 1)");
+  return r;
 }
 
 void validate(Run& r)
@@ -127,12 +101,20 @@ void writeRow(std::ofstream& out, const HaradaModel& h, const Run& r)
 
 int run()
 {
-  Run r;
-  VP_CALL(registerOptions(r));
   PetscBool helpOnly = PETSC_FALSE;
   VP_CALL(PetscOptionsHasHelp(nullptr, &helpOnly));
-  if (helpOnly) return 0;
+  if (helpOnly) {
+    setOptionsHelpMode(true);
+    readOptions();
+    PetscPrintf(PETSC_COMM_WORLD, "%s", help);
+    int rank;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    printOptionHelp(rank);
+    return 0;
+  }
+  Run r = readOptions();
   validate(r);
+  checkUnknownOptions(PETSC_COMM_WORLD, false);
 
   std::filesystem::create_directories(r.outputDir);
   const std::string path = std::string(r.outputDir) + "/particle_0.csv";

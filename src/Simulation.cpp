@@ -1,11 +1,17 @@
 #include "vp/Simulation.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
+#include "vp/core/Options.hpp"
 #include "vp/coupling/HydroForce.hpp"
 #include "vp/fluid/AnalyticFlow.hpp"
 #include "vp/grid/Boundary.hpp"
+#include "vp/io/OutputDir.hpp"
+#include "vp/io/RunRecord.hpp"
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <map>
+#include <sstream>
 
 namespace vp {
 
@@ -21,12 +27,12 @@ std::string hms(double seconds)
 
 } // namespace
 
-Simulation::Simulation(MPI_Comm comm, const Config& cfg)
-  : cfg_(cfg), grid_(comm, cfg.grid, cfg.bc), particleCfg_(ParticleConfig::fromOptions(comm))
+Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
+  : cfg_(rc.main), grid_(comm, cfg_.grid, cfg_.bc), particleCfg_(rc.particles),
+    snapshots_(cfg_.output.every, cfg_.output.dt, 0), checkpointSchedule_(cfg_.checkpoint.every, cfg_.checkpoint.dt, cfg_.checkpoint.dt),
+    guard_(comm, cfg_)
 {
   wallStart_ = MPI_Wtime();
-  if (cfg_.fluid.off && !particleCfg_.any())
-    throw InputError("option -fluid_off: a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
   std::unique_ptr<CheckpointReader> restart;
   if (!cfg_.checkpoint.restart.empty()) {
     restart = std::make_unique<CheckpointReader>(comm, cfg_.checkpoint.restart, cfg_);
@@ -35,11 +41,16 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
       failOption("-restart", n > 0 ? "the checkpoint holds " + std::to_string(n) + " particles: give the original run's particle options "
                                      "too (the particles come from the checkpoint, the contact and lubrication options from the command line)"
                                    : "the checkpoint holds no particles, but particle options are given");
+    compareSetup(*restart);
   }
-  // Read (and listed by -help) even without particles.
-  const PenalizationConfig penalizationCfg = PenalizationConfig::fromOptions(comm);
+  if (particleCfg_.any() && !particleCfg_.contact.stiffnessGiven()) {
+    // Only coupled runs get here (DEM-only runs must give one): a contact resolved over ten steps.
+    particleCfg_.contact.tc = 10 * stepBound(0);
+    PetscPrintf(comm, "vpsolve: no contact stiffness given: -contact_tc %g s, ten times the first fluid step (docs/particles.md)\n",
+                particleCfg_.contact.tc);
+  }
   if (particleCfg_.any() && !cfg_.fluid.off) {
-    penalization_ = std::make_unique<Penalization>(grid_, penalizationCfg, cfg_.fluid.rho, cfg_.fluid.nu());
+    penalization_ = std::make_unique<Penalization>(grid_, rc.penalization, cfg_.fluid.rho, cfg_.fluid.nu());
     particleCfg_.maskSupport = penalization_->support();
   }
   if (restart && particleCfg_.any())
@@ -54,34 +65,64 @@ Simulation::Simulation(MPI_Comm comm, const Config& cfg)
     sampleVelocity(grid_, flow, 0, fluid_->velocity());
     samplePressure(grid_, flow, 0, fluid_->pressure());
     fluid_->applyBoundaryConditions();
-    nextCheckpointTime_ = cfg_.checkpoint.dt;
   }
   if (penalization_) {
     buildMask(0);
     hydroSums_.assign(kHydroSums * dem_->particles().size(), 0.0);
     if (!restart) hydroForce(0);  // a restart has the fluid momentum inside each particle
   }
-  if (cfg_.output.files) {
-    makeOutputDir(comm, cfg_.output.dir);
-    fields_ = std::make_unique<FieldWriter>(grid_, cfg_.output.dir);
-    std::vector<std::string> columns{"step", "time", "dt", "cfl", "pressure_iterations", "max_divergence",
-                                     "kinetic_energy", "wall_time", "velocity_iterations", "mean_u", "mean_v", "mean_w"};
-    // A restart continues the time series after the checkpoint's row (dropping later ones).
-    const double resumeStep = restart ? step_ : -1, resumeTime = restart ? time_ : -1;
-    if (dem_) {
-      for (const char* c : {"particle_kinetic_energy", "contacts", "wall_contacts"}) columns.push_back(c);
-      particleWriter_ = std::make_unique<ParticleWriter>(comm, cfg_.output.dir);
-      tracker_ = std::make_unique<ParticleTracker>(comm, cfg_.output.dir, particleCfg_, dem_->particles(), resumeTime);
-    }
-    diagnostics_ = std::make_unique<CsvWriter>(comm, cfg_.output.dir + "/diagnostics.csv", columns, resumeStep);
-    if (restart) {
-      fields_->resume(restart->run().fieldSnapshots);
-      if (particleWriter_) particleWriter_->resume(restart->run().particleSnapshots);
-    }
-    if (cfg_.checkpoint.on()) checkpoints_ = std::make_unique<CheckpointWriter>(comm, cfg_.output.dir, cfg_.checkpoint.keep);
-  }
+  if (dem_) particlesAtStart_ = dem_->diagnostics().particles;
   firstStep_ = step_;
   firstTime_ = time_;
+}
+
+void Simulation::openOutputs()
+{
+  if (!cfg_.output.files) return;
+  const MPI_Comm comm = grid_.comm();
+  const std::string& dir = cfg_.output.dir;
+  prepareOutputDir(comm, dir, restart_ != nullptr, cfg_.output.overwrite);
+  writeRunRecord(comm, dir);
+  fields_ = std::make_unique<FieldWriter>(grid_, dir);
+  // A restart continues the time series after the checkpoint's row (dropping later ones).
+  const double resumeStep = restart_ ? step_ : -1, resumeTime = restart_ ? time_ : -1;
+  if (dem_) {
+    particleWriter_ = std::make_unique<ParticleWriter>(comm, dir);
+    tracker_ = std::make_unique<ParticleTracker>(comm, dir, particleCfg_, dem_->particles(), resumeTime);
+  }
+  diagnostics_ = std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, resumeStep);
+  if (restart_) {
+    fields_->resume(restart_->fieldSnapshots);
+    if (particleWriter_) particleWriter_->resume(restart_->particleSnapshots);
+  }
+  // Also without -checkpoint_every/_dt: a run stopped early (signal, wall-time limit) checkpoints.
+  checkpoints_ = std::make_unique<CheckpointWriter>(comm, dir, cfg_.checkpoint.keep);
+}
+
+void Simulation::compareSetup(const CheckpointReader& cp) const
+{
+  auto parse = [](const std::string& text) {
+    std::map<std::string, std::string> m;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+      const std::size_t space = line.find(' ');
+      if (space != std::string::npos) m[line.substr(0, space)] = line.substr(space + 1);
+    }
+    return m;
+  };
+  if (cp.setupOptions().empty()) return;  // a checkpoint from before the set-up was recorded
+  const auto then = parse(cp.setupOptions()), now = parse(setupOptionsText());
+  std::string changes;
+  for (const auto& [name, value] : now) {
+    const auto it = then.find(name);
+    if (it != then.end() && it->second != value) changes += " " + name + " " + it->second + " (now " + value + ")";
+  }
+  if (changes.empty()) return;
+  if (!cfg_.checkpoint.allowChanges)
+    failOption("-restart", "the checkpoint was written with other set-up options:" + changes +
+                               "; give the original values, or -restart_allow_changes to continue with the new ones");
+  PetscPrintf(grid_.comm(), "vpsolve: warning: continuing with changed set-up options (-restart_allow_changes):%s\n", changes.c_str());
 }
 
 void Simulation::restore(const CheckpointReader& cp)
@@ -92,11 +133,10 @@ void Simulation::restore(const CheckpointReader& cp)
   fluid_->finishStep();
   step_ = r.step;
   time_ = r.time;
-  nextOutputTime_ = r.nextOutputTime;
-  lastOutputStep_ = r.lastOutputStep;
+  snapshots_.resume(r.lastOutputStep, r.nextOutputTime);
   // A run that did not checkpoint by time before starts counting from here.
-  nextCheckpointTime_ = r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt;
-  lastCheckpointStep_ = step_;
+  checkpointSchedule_.resume(step_, r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt);
+  restart_ = std::make_unique<RunState>(r);
   PetscPrintf(grid_.comm(), "vpsolve: restart from %s at step %d, t = %.6g s\n", cfg_.checkpoint.restart.c_str(), step_, time_);
 }
 
@@ -111,20 +151,18 @@ void Simulation::checkpoint()
   if (!checkpoints_) return;
   StageScope stage(Stage::IO);
   if (tracker_) tracker_->flush();  // the time series hold every row up to the checkpoint
-  if (cfg_.checkpoint.dt > 0)
-    while (nextCheckpointTime_ <= time_ * (1 + 1e-12)) nextCheckpointTime_ += cfg_.checkpoint.dt;
+  checkpointSchedule_.done(step_, time_);
   RunState r;
   r.step = step_;
   r.time = time_;
   r.dtOld = fluid_->previousDt();
-  r.nextOutputTime = nextOutputTime_;
-  r.nextCheckpointTime = nextCheckpointTime_;
-  r.lastOutputStep = lastOutputStep_;
+  r.nextOutputTime = snapshots_.nextTime();
+  r.nextCheckpointTime = checkpointSchedule_.nextTime();
+  r.lastOutputStep = snapshots_.lastStep();
   if (fields_) r.fieldSnapshots = fields_->snapshotList();
   if (particleWriter_) r.particleSnapshots = particleWriter_->snapshotList();
   checkpoints_->write(grid_, cfg_.bc, r, fluidState(),
                       dem_ ? dem_->ownedRecords() : std::vector<ParticleRecord>{});
-  lastCheckpointStep_ = step_;
 }
 
 Simulation::~Simulation() = default;
@@ -141,22 +179,32 @@ double Simulation::particleRate() const
   return global;
 }
 
+double Simulation::stepBound(double rate) const
+{
+  if (cfg_.time.dt > 0) return std::min(cfg_.time.dt, cfg_.time.final);
+  const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
+  // Without -time_dt_max: the viscous time of a cell, and at least ten steps over the run (a flow
+  // at rest has no other bound).
+  double dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : std::min(hmin * hmin / cfg_.fluid.nu(), 0.1 * cfg_.time.final);
+  // Moving walls count too: they set the flow in motion from rest.
+  for (int f = 0; f < 6; ++f)
+    for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
+  if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
+  // Particles released from rest: a step may not let gravity move them more than cfl cells.
+  const double g = norm(cfg_.gravity);
+  if (particleCfg_.any() && g > 0) dt = std::min(dt, std::sqrt(2 * cfg_.time.cfl * hmin / g));
+  return std::min(dt, cfg_.time.final);
+}
+
 double Simulation::nextDt() const
 {
-  double dt = cfg_.time.dt;
-  // DEM only: the step is -dem_substeps stable DEM steps.
-  if (dt <= 0 && cfg_.fluid.off) dt = dem_->suggestedStep() * particleCfg_.substeps;
-  if (dt <= 0) {
-    const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
-    dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : hmin * hmin / cfg_.fluid.nu();
-    // Moving walls count too: they set the flow in motion from rest.
-    double rate = std::max(fluid_->stats().maxRate, particleRate());
-    for (int f = 0; f < 6; ++f)
-      for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
-    if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
-    // Particles released from rest: a step may not let gravity move them more than cfl cells.
-    const double g = norm(cfg_.gravity);
-    if (dem_ && g > 0) dt = std::min(dt, std::sqrt(2 * cfg_.time.cfl * hmin / g));
+  double dt;
+  if (cfg_.time.dt > 0)
+    dt = cfg_.time.dt;
+  else if (cfg_.fluid.off)  // DEM only: the step is -dem_substeps stable DEM steps.
+    dt = dem_->suggestedStep() * particleCfg_.substeps;
+  else {
+    dt = stepBound(std::max(fluid_->stats().maxRate, particleRate()));
     // The saturated lubrication is an explicit dashpot in the DEM sub-steps.
     if (dem_) dt = std::min(dt, dem_->lubricationStepLimit());
   }
@@ -209,48 +257,79 @@ void Simulation::advance(double dt)
   pressureIterationsTotal_ += last_.pressureIterations;
 }
 
-void Simulation::run()
+int Simulation::run()
 {
+  openOutputs();
   printSetup();
-  const bool snapshots = cfg_.output.every > 0 || cfg_.output.dt > 0;
   // A restart continues the previous run's outputs: its snapshots and tracker rows are written.
-  const bool restarted = !cfg_.checkpoint.restart.empty();
-  if (snapshots && !restarted) output();
-  if (tracker_ && !restarted) tracker_->record(dem_->particles(), time_);
+  if (!restart_) {
+    if (snapshots_.on()) output();
+    if (tracker_) tracker_->record(dem_->particles(), time_);
+  }
+  restart_.reset();
+  std::string stop;
+  int status = 0;
   const double loopStart = MPI_Wtime();
-  while (time_ < cfg_.time.final * (1 - 1e-12) && step_ < cfg_.time.maxSteps) {
+  while (true) {
+    if (time_ >= cfg_.time.final * (1 - 1e-12)) {
+      stop = "reached -time_final";
+      break;
+    }
+    if (step_ >= cfg_.time.maxSteps) {
+      stop = "reached -time_max_steps";
+      break;
+    }
     const double dt = nextDt();
     const double t0 = MPI_Wtime();
-    advance(dt);
-    wallLastStep_ = MPI_Wtime() - t0;
-    const auto& s = fluid_->stats();
-    std::vector<double> row{double(step_), time_, dt, dt * s.maxRate, double(last_.pressureIterations), s.maxDivergence,
-                            cfg_.fluid.rho * s.kineticEnergy, MPI_Wtime() - wallStart_, double(last_.velocityIterations),
-                            s.meanVelocity.x, s.meanVelocity.y, s.meanVelocity.z};
-    if (dem_) {
-      const DemDiagnostics d = dem_->diagnostics();
-      row.insert(row.end(), {d.kineticEnergy, double(d.contacts), double(d.wallContacts)});
-      if (tracker_) tracker_->record(dem_->particles(), time_);
+    try {
+      advance(dt);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("step " + std::to_string(step_ + 1) + ", t = " + formatNumber(time_ + dt) + " s, dt = " +
+                               formatNumber(dt) + " s: " + e.what());
     }
-    if (diagnostics_) diagnostics_->row(row);
-    if (!std::isfinite(s.kineticEnergy))
-      throw std::runtime_error("the flow blew up at step " + std::to_string(step_) + " (non-finite velocity); reduce -time_cfl or -time_dt_max");
+    wallLastStep_ = MPI_Wtime() - t0;
+    record();
+    const StepVerdict v = guard_.check(step_, time_, dt, fluid_->stats(), dem_.get(), MPI_Wtime() - wallStart_, wallLastStep_);
+    if (!v.problem.empty()) {
+      output();  // for inspection
+      loopWall_ = MPI_Wtime() - loopStart;
+      finish("health check failed: " + v.problem);
+      throw RunFailure("the run stopped on a failed health check (above); the snapshot of step " + std::to_string(step_) +
+                       " is written for inspection");
+    }
     if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
       monitor(dt);
       if (tracker_) tracker_->flush();  // a running case's particle_<id>.csv can be followed too
     }
-    const bool due = (cfg_.output.every > 0 && step_ % cfg_.output.every == 0) ||
-                     (cfg_.output.dt > 0 && time_ >= nextOutputTime_ * (1 - 1e-12));
-    if (due) output();
-    const bool checkpointDue = (cfg_.checkpoint.every > 0 && step_ % cfg_.checkpoint.every == 0) ||
-                               (cfg_.checkpoint.dt > 0 && time_ >= nextCheckpointTime_ * (1 - 1e-12));
-    if (checkpointDue) checkpoint();
+    if (snapshots_.due(step_, time_)) output();
+    if (checkpointSchedule_.due(step_, time_)) checkpoint();
+    if (v.signal) {
+      stop = std::string("signal ") + (v.signal == SIGTERM ? "SIGTERM" : v.signal == SIGINT ? "SIGINT" : std::to_string(v.signal));
+      status = 128 + v.signal;
+      break;
+    }
+    if (v.wallLimit) {
+      stop = "reached -time_wall_limit";
+      break;
+    }
   }
   loopWall_ = MPI_Wtime() - loopStart;
-  if (snapshots && lastOutputStep_ != step_) output();
-  if (lastCheckpointStep_ != step_) checkpoint();  // the end state, to continue the run later
+  if (snapshots_.lastStep() != step_) output();  // always the final state
+  const bool early = status != 0 || stop == "reached -time_wall_limit";
+  if ((checkpointSchedule_.on() || early) && checkpointSchedule_.lastStep() != step_) checkpoint();
   if (tracker_) tracker_->flush();
-  printSummary();
+  finish(stop);
+  return status;
+}
+
+void Simulation::record()
+{
+  if (tracker_) tracker_->record(dem_->particles(), time_);
+  if (diagnostics_)
+    diagnostics_->record(step_, time_, fluid_->previousDt(), last_, fluid_->stats(), cfg_.fluid.rho, MPI_Wtime() - wallStart_,
+                         dem_.get());
 }
 
 void Simulation::output()
@@ -260,9 +339,7 @@ void Simulation::output()
   if (!cfg_.fluid.off)
     fields_->write(step_, time_, fluid_->velocityLocal(), fluid_->pressure(), penalization_ ? penalization_->chi() : nullptr);
   if (particleWriter_) particleWriter_->write(dem_->particles(), step_, time_);
-  lastOutputStep_ = step_;
-  if (cfg_.output.dt > 0)
-    while (nextOutputTime_ <= time_ * (1 + 1e-12)) nextOutputTime_ += cfg_.output.dt;
+  snapshots_.done(step_, time_);
 }
 
 void Simulation::monitor(double dt) const
@@ -300,23 +377,46 @@ void Simulation::printSetup() const
               cfg_.time.maxSteps);
 }
 
-void Simulation::printSummary() const
+void Simulation::finish(const std::string& stopReason)
 {
+  const MPI_Comm comm = grid_.comm();
   const double wall = MPI_Wtime() - wallStart_;
   const int steps = step_ - firstStep_;  // of this run (a restart continues the count)
+  PetscPrintf(comm, "vpsolve: stopped at step %d, t = %.6g s: %s\n", step_, time_, stopReason.c_str());
   if (!cfg_.fluid.off)
-    PetscPrintf(grid_.comm(), "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
-              "mean pressure iterations %.1f; kinetic energy %.6e J\n",
-              steps, time_, wall, wall / std::max(steps, 1), wall / std::max(steps, 1) / grid_.cells() * 1e6,
-              double(pressureIterationsTotal_) / std::max(steps, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
+    PetscPrintf(comm, "vpsolve: %d steps to t = %.6g s in %.2f s (%.4f s/step, %.3f us per cell and step); "
+                "mean pressure iterations %.1f; kinetic energy %.6e J\n",
+                steps, time_, wall, wall / std::max(steps, 1), wall / std::max(steps, 1) / grid_.cells() * 1e6,
+                double(pressureIterationsTotal_) / std::max(steps, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
+  long particles = 0;
   if (dem_) {
     const DemDiagnostics d = dem_->diagnostics();
+    particles = d.particles;
     const double particleSteps = double(d.particles) * steps * particleCfg_.substeps;
-    PetscPrintf(grid_.comm(), "vpsolve: DEM %ld particles, %d x %d sub-steps, loop time %.3f s, %.4g particle-steps/s, "
-                "%zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
-                d.particles, steps, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
+    PetscPrintf(comm, "vpsolve: DEM %ld particles (%ld at the start of this run), %d x %d sub-steps, loop time %.3f s, "
+                "%.4g particle-steps/s, %zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
+                d.particles, particlesAtStart_, steps, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
                 d.kineticEnergy);
   }
+  // Stage timings: the slowest rank's seconds per stage.
+  std::string stages;
+  PetscPrintf(comm, "vpsolve: stage timings (slowest rank)   seconds   %% of run    ms/step\n");
+  for (int k = 0; k < static_cast<int>(Stage::Count); ++k) {
+    double t = stageSeconds(static_cast<Stage>(k));
+    MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_MAX, comm);
+    if (t == 0) continue;
+    PetscPrintf(comm, "vpsolve:   %-30s %9.3f %9.1f %11.3f\n", stageName(static_cast<Stage>(k)), t,
+                100 * t / std::max(wall, 1e-30), 1e3 * t / std::max(steps, 1));
+    stages += std::string(stages.empty() ? "" : ", ") + jsonString(stageName(static_cast<Stage>(k))) + ": " + formatNumber(t);
+  }
+  if (!fields_) return;
+  std::string end = "\"stop_reason\": " + jsonString(stopReason) + ",\n  \"step\": " + std::to_string(step_) +
+                    ",\n  \"time\": " + formatNumber(time_) + ",\n  \"steps_this_run\": " + std::to_string(steps) +
+                    ",\n  \"wall_seconds\": " + formatNumber(wall) + ",\n  \"loop_seconds\": " + formatNumber(loopWall_) +
+                    ",\n  \"stage_seconds\": {" + stages + "}";
+  if (!cfg_.fluid.off) end += ",\n  \"kinetic_energy\": " + formatNumber(cfg_.fluid.rho * fluid_->stats().kineticEnergy);
+  if (dem_) end += ",\n  \"particles_at_start\": " + std::to_string(particlesAtStart_) + ",\n  \"particles\": " + std::to_string(particles);
+  writeRunRecord(comm, cfg_.output.dir, end);
 }
 
 } // namespace vp

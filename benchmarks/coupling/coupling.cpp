@@ -20,7 +20,7 @@ int main(int argc, char** argv)
     c.output.files = false;
     c.output.monitorEvery = 0;
     PetscOptionsGetReal(nullptr, nullptr, "-time_dt", &c.time.dt, nullptr);
-    vp::Simulation sim(PETSC_COMM_WORLD, c);
+    vp::Simulation sim(PETSC_COMM_WORLD, vp::RunConfig(c));
     const double total = vp::bench::timeSteps(sim, 3, int(steps));
     int size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);

@@ -21,7 +21,7 @@ int main(int argc, char** argv)
     c.fluid.mu = 1.0 / 400;
     c.output.files = false;
     c.output.monitorEvery = 0;
-    vp::Simulation sim(PETSC_COMM_WORLD, c);
+    vp::Simulation sim(PETSC_COMM_WORLD, vp::RunConfig(c));
     const double total = vp::bench::timeSteps(sim, int(warmup), int(steps));
     int size;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);

@@ -1,16 +1,21 @@
 #pragma once
-// Owns everything of a run: grid, fluid, output. setUp happens in the constructor; advance() does
-// one time step (docs/fluid.md and docs/coupling.md), run() steps to -time_final or -time_max_steps with output,
-// diagnostics and progress lines.
-#include "vp/core/Config.hpp"
+// Owns everything of a run: grid, fluid, particles, outputs. The constructor builds the solvers
+// from a validated RunConfig and writes nothing; run() opens the outputs (run.json first), steps
+// ("advance, record, output if due, checkpoint if due") to -time_final or -time_max_steps unless a
+// health check fails or a stop is requested, and ends with a final snapshot, a checkpoint when one
+// is configured or the stop was early, the stage timings and the run record's stop reason
+// (docs/architecture.md, run lifecycle).
+#include "vp/RunConfig.hpp"
+#include "vp/RunGuard.hpp"
 #include "vp/coupling/Penalization.hpp"
 #include "vp/fluid/Projection.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/io/Checkpoint.hpp"
-#include "vp/io/CsvWriter.hpp"
+#include "vp/io/Diagnostics.hpp"
 #include "vp/io/FieldWriter.hpp"
 #include "vp/io/ParticleTracker.hpp"
 #include "vp/io/ParticleWriter.hpp"
+#include "vp/io/Schedule.hpp"
 #include "vp/particles/DemSolver.hpp"
 #include <memory>
 
@@ -18,10 +23,12 @@ namespace vp {
 
 class Simulation {
 public:
-  Simulation(MPI_Comm comm, const Config& cfg);
+  Simulation(MPI_Comm comm, const RunConfig& cfg);
   ~Simulation();
 
-  void run();
+  // The whole run; returns the exit status (0, or 128 + the signal that stopped it). A failed
+  // health check throws RunFailure after writing a snapshot.
+  int run();
   void advance(double dt);
   double nextDt() const;  // from -time_dt, or CFL and -time_dt_max, clipped to -time_final
 
@@ -34,10 +41,14 @@ public:
   Penalization* penalization() { return penalization_.get(); }
 
 private:
-  void output();
+  void openOutputs();
+  void record();      // diagnostics row and tracked particles of the step just taken
+  void output();      // field and particle snapshot
   void checkpoint();  // checkpoint_<step>.h5 (docs/outputs.md)
   // Continues from -restart: fluid state, particles, counters, output lists.
   void restore(const CheckpointReader& cp);
+  // Refuses (or with -restart_allow_changes warns about) set-up options that differ from the checkpoint's.
+  void compareSetup(const CheckpointReader& cp) const;
   FluidState fluidState() const;  // the vectors a checkpoint holds
   // The penalization force on each particle from the predicted velocity, and the hydrodynamic
   // forces once the velocity is projected (dt = 0: only the fluid momentum, initial state).
@@ -45,27 +56,35 @@ private:
   void hydroForce(double dt);
   void buildMask(double dt);  // chi, u_s, theta from the particles' current state
   double particleRate() const;  // max over particles of (|U_c| + |Omega| a) / h_c (collective)
+  // The step -time_dt gives, or the bounds of the grid (CFL at this rate, viscous, -time_dt_max),
+  // the walls and gravity; also before the solvers exist (rate 0).
+  double stepBound(double rate) const;
   void monitor(double dt) const;
   void printSetup() const;
-  void printSummary() const;
+  // The summary lines, the stage table and run.json's end (stop reason, figures).
+  void finish(const std::string& stopReason);
 
   Config cfg_;
   Grid grid_;
+  ParticleConfig particleCfg_;
   std::unique_ptr<Projection> fluid_;
   std::unique_ptr<FieldWriter> fields_;
-  std::unique_ptr<CsvWriter> diagnostics_;
-  ParticleConfig particleCfg_;
+  std::unique_ptr<Diagnostics> diagnostics_;
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
   std::unique_ptr<Penalization> penalization_;     // particles in a fluid
   std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
   std::unique_ptr<ParticleTracker> tracker_;
   std::unique_ptr<CheckpointWriter> checkpoints_;
+  std::unique_ptr<RunState> restart_;              // the checkpoint's run state, until the outputs resume it
+  Schedule snapshots_, checkpointSchedule_;
+  RunGuard guard_;
   double loopWall_ = 0;                            // wall time of the stepping loop
-  double time_ = 0, nextOutputTime_ = 0, nextCheckpointTime_ = 0;
-  int step_ = 0, lastOutputStep_ = -1, lastCheckpointStep_ = -1;
+  double time_ = 0;
+  int step_ = 0;
   int firstStep_ = 0;       // step and time this run started from (0 unless restarted)
   double firstTime_ = 0;
+  long particlesAtStart_ = 0;
   StepStats last_;
   double wallStart_ = 0, wallLastStep_ = 0;
   long pressureIterationsTotal_ = 0;

@@ -30,7 +30,7 @@ def run(out, *opts, case="restitution.opts", np=None):
         cmd = ["mpirun", "-n", str(np or ranks), vpsolve]
         if case != "none":  # first: the options after it override the case's
             cmd += ["-options_file", os.path.join(root, "cases", case)]
-        cmd += ["-output_dir", out, "-monitor_every", "0", "-output_every", "0", "-output_dt", "0", "-track_particles", "all"]
+        cmd += ["-output_dir", out, "-output_overwrite", "-monitor_every", "0", "-output_every", "0", "-output_dt", "0", "-track_particles", "all"]
         subprocess.run(cmd + [str(o) for o in opts], check=True, stdout=subprocess.DEVNULL, cwd=root)
     return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(done))]
 

@@ -19,7 +19,7 @@ def run(case, out, *opts):
     rows = lambda f: list(csv.DictReader(open(os.path.join(out, f))))
     if reuse and os.path.exists(os.path.join(out, "particle_0.csv")):
         return rows("diagnostics.csv"), rows("particle_0.csv")
-    cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", os.path.join(root, "cases", case), "-output_dir", out,
+    cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", os.path.join(root, "cases", case), "-output_dir", out, "-output_overwrite",
            "-monitor_every", "0", "-output_every", "0", "-output_dt", "0"] + [str(o) for o in opts]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, cwd=root)
     return rows("diagnostics.csv"), rows("particle_0.csv")

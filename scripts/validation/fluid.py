@@ -9,7 +9,7 @@ from common import plt, root, ranks as np_ranks, vpsolve, outdir
 
 def run(case, out, *opts):
     cmd = ["mpirun", "-n", np_ranks, vpsolve, "-options_file", os.path.join(root, "cases", case),
-           "-output_dir", out, "-monitor_every", "0"] + list(opts)
+           "-output_dir", out, "-output_overwrite", "-monitor_every", "0"] + list(opts)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 

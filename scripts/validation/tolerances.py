@@ -21,7 +21,7 @@ def run(name, tol, opts):
     rows = lambda f: list(csv.DictReader(open(os.path.join(out, f))))
     if not (reuse and os.path.exists(os.path.join(out, "diagnostics.csv"))):
         cmd = ["mpirun", "-n", ranks, vpsolve] + opts + [
-            "-output_dir", out, "-monitor_every", "0", "-output_every", "0", "-output_dt", "0",
+            "-output_dir", out, "-output_overwrite", "-monitor_every", "0", "-output_every", "0", "-output_dt", "0",
             "-pressure_ksp_rtol", str(tol), "-pressure_ksp_atol", "0", "-velocity_ksp_rtol", str(tol),
             "-velocity_ksp_atol", "0"]
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, cwd=root)

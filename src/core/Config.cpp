@@ -1,8 +1,9 @@
 #include "vp/core/Config.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include <cmath>
 #include <petscsys.h>
-#include <sstream>
+#include <vector>
 
 namespace vp {
 
@@ -16,148 +17,81 @@ const char* const kInitNames[4] = {"rest", "taylor_green", "abc", "poiseuille"};
 
 std::string str(double v) { return formatNumber(v); }
 
-template <size_t N>
-int lookup(const char* const (&names)[N], const std::string& value, const std::string& option)
-{
-  for (size_t i = 0; i < N; ++i)
-    if (value == names[i]) return static_cast<int>(i);
-  std::string valid;
-  for (size_t i = 0; i < N; ++i) valid += std::string(i ? ", " : "") + names[i];
-  fail(option, "unknown value '" + value + "' (valid: " + valid + ")");
-}
-
-void readVec3(PetscReal (&a)[3], PetscInt n, PetscBool set, const char* option)
-{
-  if (set && n != 3) fail(option, "needs 3 comma-separated values, got " + std::to_string(n));
-}
-
-// An int option inside an options block (PetscInt may be wider than int).
-PetscErrorCode optionInt(PetscOptionItems* PetscOptionsObject, const char* name, const char* help, int& value)
-{
-  PetscInt v = value;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsInt(name, help, "", v, &v, nullptr));
-  value = static_cast<int>(v);
-  PetscFunctionReturn(0);
-}
-
-// The options blocks; strings are returned raw and parsed in fromOptions for clear messages.
-struct Raw {
-  char bc[6][64];
-  char init[64];
-  char dir[PETSC_MAX_PATH_LEN];
-  char restart[PETSC_MAX_PATH_LEN];
-};
-
-PetscErrorCode registerOptions(MPI_Comm comm, Config& c, Raw& raw)
-{
-  PetscInt n;
-  PetscBool set;
-  PetscFunctionBeginUser;
-
-  PetscOptionsBegin(comm, nullptr, "Grid: uniform 3-D box", "vpsolve");
-  {
-    PetscInt cells[3] = {c.grid.n[0], c.grid.n[1], c.grid.n[2]};
-    n = 3;
-    PetscCall(PetscOptionsIntArray("-grid_n", "Cells per axis nx,ny,nz", "", cells, &n, &set));
-    if (set && n != 3) fail("-grid_n", "needs 3 comma-separated values, got " + std::to_string(n));
-    for (int d = 0; d < 3; ++d) c.grid.n[d] = cells[d];
-    PetscReal lo[3] = {c.grid.lo[0], c.grid.lo[1], c.grid.lo[2]};
-    PetscReal hi[3] = {c.grid.hi[0], c.grid.hi[1], c.grid.hi[2]};
-    n = 3;
-    PetscCall(PetscOptionsRealArray("-grid_lo", "Lower corner x,y,z of the domain (m)", "", lo, &n, &set));
-    readVec3(lo, n, set, "-grid_lo");
-    n = 3;
-    PetscCall(PetscOptionsRealArray("-grid_hi", "Upper corner x,y,z of the domain (m)", "", hi, &n, &set));
-    readVec3(hi, n, set, "-grid_hi");
-    for (int d = 0; d < 3; ++d) { c.grid.lo[d] = lo[d]; c.grid.hi[d] = hi[d]; }
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Boundary conditions per face: wall|slip|periodic|velocity", "vpsolve");
-  for (int f = 0; f < 6; ++f) {
-    std::string opt = std::string("-bc_") + kFaceNames[f];
-    std::string help = std::string("Boundary type of the ") + kFaceNames[f] + " face (wall, slip, periodic, velocity)";
-    PetscCall(PetscStrcpy(raw.bc[f], bcName(c.bc.type[f])));
-    PetscCall(PetscOptionsString(opt.c_str(), help.c_str(), "", raw.bc[f], raw.bc[f], sizeof raw.bc[f], &set));
-    PetscReal v[3] = {c.bc.velocity[f].x, c.bc.velocity[f].y, c.bc.velocity[f].z};
-    std::string vopt = opt + "_velocity";
-    n = 3;
-    PetscCall(PetscOptionsRealArray(vopt.c_str(), "Wall velocity u,v,w of a 'velocity' face (m/s)", "", v, &n, &set));
-    readVec3(v, n, set, vopt.c_str());
-    c.bc.velocity[f] = {v[0], v[1], v[2]};
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Fluid", "vpsolve");
-  {
-    PetscBool off = c.fluid.off ? PETSC_TRUE : PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-fluid_off", "Run without fluid (DEM only)", "", off, &off, nullptr));
-    c.fluid.off = off;
-    PetscCall(PetscOptionsReal("-fluid_rho", "Fluid density (kg/m^3)", "", c.fluid.rho, &c.fluid.rho, nullptr));
-    PetscCall(PetscOptionsReal("-fluid_mu", "Fluid dynamic viscosity (Pa s)", "", c.fluid.mu, &c.fluid.mu, nullptr));
-    PetscReal f[3] = {c.fluid.bodyForce.x, c.fluid.bodyForce.y, c.fluid.bodyForce.z};
-    n = 3;
-    PetscCall(PetscOptionsRealArray("-fluid_body_force", "Body force per unit mass on the fluid ax,ay,az (m/s^2)", "", f, &n, &set));
-    readVec3(f, n, set, "-fluid_body_force");
-    c.fluid.bodyForce = {f[0], f[1], f[2]};
-    PetscReal g[3] = {c.gravity.x, c.gravity.y, c.gravity.z};
-    n = 3;
-    PetscCall(PetscOptionsRealArray("-gravity", "Gravity gx,gy,gz (m/s^2); balanced by hydrostatic pressure in the fluid", "", g, &n, &set));
-    readVec3(g, n, set, "-gravity");
-    c.gravity = {g[0], g[1], g[2]};
-    PetscCall(PetscStrcpy(raw.init, kInitNames[static_cast<int>(c.fluid.init)]));
-    PetscCall(PetscOptionsString("-init_flow", "Initial flow: rest, taylor_green, abc, poiseuille", "", raw.init, raw.init, sizeof raw.init, &set));
-    PetscCall(PetscOptionsReal("-init_velocity", "Velocity amplitude of the analytic initial flows (m/s)", "", c.fluid.initVelocity, &c.fluid.initVelocity, nullptr));
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Time stepping", "vpsolve");
-  PetscCall(PetscOptionsReal("-time_final", "End time (s)", "", c.time.final, &c.time.final, nullptr));
-  PetscCall(optionInt(PetscOptionsObject, "-time_max_steps", "Maximum number of fluid steps", c.time.maxSteps));
-  PetscCall(PetscOptionsReal("-time_cfl", "Target CFL number, dt = cfl * min(h / |u_max|)", "", c.time.cfl, &c.time.cfl, nullptr));
-  PetscCall(PetscOptionsReal("-time_dt_max", "Largest time step (s); 0: min(h)^2 / nu", "", c.time.dtMax, &c.time.dtMax, nullptr));
-  PetscCall(PetscOptionsReal("-time_dt", "Fixed time step (s); 0: CFL-adaptive", "", c.time.dt, &c.time.dt, nullptr));
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Output", "vpsolve");
-  {
-    PetscCall(PetscStrcpy(raw.dir, c.output.dir.c_str()));
-    PetscCall(PetscOptionsString("-output_dir", "Directory for fields, particles, diagnostics", "", raw.dir, raw.dir, sizeof raw.dir, nullptr));
-    PetscCall(optionInt(PetscOptionsObject, "-output_every", "Steps between field snapshots (0: none)", c.output.every));
-    PetscCall(PetscOptionsReal("-output_dt", "Simulated time between field snapshots (s; 0: none)", "", c.output.dt, &c.output.dt, nullptr));
-    PetscCall(optionInt(PetscOptionsObject, "-monitor_every", "Steps between progress lines (0: none)", c.output.monitorEvery));
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "Checkpoint/restart", "vpsolve");
-  {
-    PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint (checkpoint_<step>.h5 or checkpoint_latest.h5); "
-                                 "particles come from it, grid and boundaries must match", "", raw.restart, raw.restart,
-                                 sizeof raw.restart, nullptr));
-    PetscCall(optionInt(PetscOptionsObject, "-checkpoint_every", "Steps between checkpoints (0: none)", c.checkpoint.every));
-    PetscCall(PetscOptionsReal("-checkpoint_dt", "Simulated time between checkpoints (s; 0: none)", "", c.checkpoint.dt, &c.checkpoint.dt, nullptr));
-    PetscCall(optionInt(PetscOptionsObject, "-checkpoint_keep", "Checkpoints of this run kept on disk, newest first", c.checkpoint.keep));
-  }
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
+std::vector<std::string> names(const char* const* v, int n) { return {v, v + n}; }
 
 } // namespace
 
 const char* bcName(BcType t) { return kBcNames[static_cast<int>(t)]; }
 
-Config Config::fromOptions(MPI_Comm comm)
+Config Config::read()
 {
   Config c;
-  Raw raw{};
-  VP_CALL(registerOptions(comm, c, raw));
-  for (int f = 0; f < 6; ++f)
-    c.bc.type[f] = static_cast<BcType>(lookup(kBcNames, raw.bc[f], std::string("-bc_") + kFaceNames[f]));
-  c.fluid.init = static_cast<InitFlow>(lookup(kInitNames, raw.init, "-init_flow"));
-  c.output.dir = raw.dir;
-  c.checkpoint.restart = raw.restart;
-  c.validate();
+  {
+    OptionGroup o("Grid: uniform 3-D box");
+    const Vec3 n = o.vec3("-grid_n", {32, 32, 32}, "Cells per axis nx,ny,nz");
+    for (int d = 0; d < 3; ++d) {
+      if (n[d] != std::floor(n[d]) || std::fabs(n[d]) > 1e9) fail("-grid_n", "needs whole numbers of cells, got " + str(n[d]));
+      c.grid.n[d] = static_cast<int>(n[d]);
+    }
+    const Vec3 lo = o.vec3("-grid_lo", {0, 0, 0}, "Lower corner x,y,z of the domain (m)");
+    const Vec3 hi = o.vec3("-grid_hi", {1, 1, 1}, "Upper corner x,y,z of the domain (m)");
+    for (int d = 0; d < 3; ++d) {
+      c.grid.lo[d] = lo[d];
+      c.grid.hi[d] = hi[d];
+    }
+  }
+  {
+    OptionGroup o("Boundary conditions per face: wall|slip|periodic|velocity");
+    for (int f = 0; f < 6; ++f) {
+      const std::string opt = std::string("-bc_") + kFaceNames[f];
+      const std::string help = std::string("Boundary type of the ") + kFaceNames[f] + " face";
+      c.bc.type[f] = static_cast<BcType>(o.choice(opt.c_str(), names(kBcNames, 4), 0, help.c_str()));
+      c.bc.velocity[f] = o.vec3((opt + "_velocity").c_str(), {}, "Wall velocity u,v,w of a 'velocity' face (m/s)");
+    }
+  }
+  {
+    OptionGroup o("Fluid");
+    c.fluid.off = o.flag("-fluid_off", false, "Run without fluid (DEM only)");
+    c.fluid.rho = o.real("-fluid_rho", c.fluid.rho, "Fluid density (kg/m^3)");
+    c.fluid.mu = o.real("-fluid_mu", c.fluid.mu, "Fluid dynamic viscosity (Pa s)");
+    c.fluid.bodyForce = o.vec3("-fluid_body_force", {}, "Body force per unit mass on the fluid ax,ay,az (m/s^2)");
+    c.gravity = o.vec3("-gravity", {}, "Gravity gx,gy,gz (m/s^2); balanced by hydrostatic pressure in the fluid");
+    c.fluid.init = static_cast<InitFlow>(o.choice("-init_flow", names(kInitNames, 4), 0, "Initial flow"));
+    c.fluid.initVelocity = o.real("-init_velocity", c.fluid.initVelocity, "Velocity amplitude of the analytic initial flows (m/s)");
+  }
+  {
+    OptionGroup o("Time stepping", false);
+    c.time.final = o.real("-time_final", c.time.final, "End time (s)");
+    c.time.maxSteps = o.integer("-time_max_steps", c.time.maxSteps, "Maximum number of fluid steps");
+    c.time.cfl = o.real("-time_cfl", c.time.cfl, "Target CFL number, dt = cfl * min(h / |u_max|)");
+    c.time.dtMax = o.real("-time_dt_max", c.time.dtMax, "Largest time step (s); 0: min(h)^2 / nu or -time_final / 10, the smaller");
+    c.time.dt = o.real("-time_dt", c.time.dt, "Fixed time step (s); 0: CFL-adaptive");
+    c.time.wallLimit = o.real("-time_wall_limit", 0, "Wall-clock limit (s; 0: none): the run stops with a checkpoint at the step "
+                                                     "boundary before it (leave a margin for the checkpoint)");
+  }
+  {
+    OptionGroup o("Health checks after every step (a failed check stops the run with a snapshot)", false);
+    c.health.cflMax = o.real("-health_cfl_max", c.health.cflMax, "Largest CFL number accepted with a fixed -time_dt");
+    c.health.overlapMax = o.real("-health_overlap_max", c.health.overlapMax, "Largest contact overlap, fraction of the smaller diameter");
+  }
+  {
+    OptionGroup o("Output", false);
+    c.output.dir = o.text("-output_dir", c.output.dir, "Directory for fields, particles, diagnostics");
+    c.output.every = o.integer("-output_every", c.output.every, "Steps between field snapshots (0: none)");
+    c.output.dt = o.real("-output_dt", c.output.dt, "Simulated time between field snapshots (s; 0: none)");
+    c.output.monitorEvery = o.integer("-monitor_every", c.output.monitorEvery, "Steps between progress lines (0: none)");
+    c.output.overwrite = o.flag("-output_overwrite", false, "Replace the outputs of another run found in -output_dir");
+  }
+  {
+    OptionGroup o("Checkpoint/restart", false);
+    c.checkpoint.restart = o.text("-restart", "", "Continue from this checkpoint (checkpoint_<step>.h5 or checkpoint_latest.h5); "
+                                                 "particles come from it, grid and boundaries must match");
+    c.checkpoint.every = o.integer("-checkpoint_every", c.checkpoint.every, "Steps between checkpoints (0: none)");
+    c.checkpoint.dt = o.real("-checkpoint_dt", c.checkpoint.dt, "Simulated time between checkpoints (s; 0: none)");
+    c.checkpoint.keep = o.integer("-checkpoint_keep", c.checkpoint.keep, "Checkpoints of this run kept on disk, newest first");
+    c.checkpoint.allowChanges = o.flag("-restart_allow_changes", false, "Continue a checkpoint whose set-up options differ "
+                                                                        "(physics, particles) with a warning instead of an error");
+  }
   return c;
 }
 
@@ -175,6 +109,12 @@ void Config::validate() const
       fail(std::string("-bc_") + kFaceNames[2 * d + (plo ? 1 : 0)],
            std::string("periodic must be set on both ") + axis[d] + " faces (-bc_" + kFaceNames[2 * d] + " and -bc_" + kFaceNames[2 * d + 1] + ")");
   }
+  // Face vectors have 3 (n+1)^3 entries: they must fit PETSc's index type.
+  const double faces = 3.0 * (grid.n[0] + 1.0) * (grid.n[1] + 1.0) * (grid.n[2] + 1.0);
+  if (faces > double(PETSC_MAX_INT))
+    fail("-grid_n", std::to_string(grid.n[0]) + "," + std::to_string(grid.n[1]) + "," + std::to_string(grid.n[2]) +
+                        " needs " + str(faces) + " face unknowns, more than this PETSc build indexes (" +
+                        std::to_string(PETSC_MAX_INT) + "; a 64-bit-index PETSc would be needed)");
   for (int f = 0; f < 6; ++f) {
     const Vec3& v = bc.velocity[f];
     if (bc.type[f] != BcType::Velocity && (v.x != 0 || v.y != 0 || v.z != 0))
@@ -195,6 +135,9 @@ void Config::validate() const
   if (output.dir.empty()) fail("-output_dir", "must not be empty");
   if (checkpoint.every < 0) fail("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
   if (!(checkpoint.dt >= 0)) fail("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + str(checkpoint.dt));
+  if (!(time.wallLimit >= 0)) fail("-time_wall_limit", "must be >= 0 (0: none), got " + str(time.wallLimit));
+  if (!(health.cflMax > 0)) fail("-health_cfl_max", "must be > 0, got " + str(health.cflMax));
+  if (!(health.overlapMax > 0 && health.overlapMax <= 1)) fail("-health_overlap_max", "must be in (0, 1], got " + str(health.overlapMax));
   if (checkpoint.keep < 1) fail("-checkpoint_keep", "must be >= 1, got " + std::to_string(checkpoint.keep));
   if (fluid.init == InitFlow::TaylorGreen || fluid.init == InitFlow::Abc) {
     bool needZ = fluid.init == InitFlow::Abc;

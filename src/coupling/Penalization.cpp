@@ -1,5 +1,6 @@
 #include "vp/coupling/Penalization.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <algorithm>
 #include <cmath>
@@ -7,35 +8,20 @@
 
 namespace vp {
 
-namespace {
-
-PetscErrorCode registerOptions(MPI_Comm comm, PenalizationConfig& c, char* mask, size_t len)
-{
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "Volume penalization of the particles", "vpsolve");
-  PetscCall(PetscOptionsString("-penalization_mask", "Mask of a sphere on the faces: smooth, sharp", "", mask, mask, len, nullptr));
-  PetscCall(PetscOptionsReal("-penalization_lambda", "Penalization coefficient lambda (1/s); 0: 400 nu / h^2", "", c.lambda, &c.lambda, nullptr));
-  PetscCall(PetscOptionsReal("-penalization_width", "Width of the smooth mask (cells)", "", c.width, &c.width, nullptr));
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
-
-} // namespace
-
-PenalizationConfig PenalizationConfig::fromOptions(MPI_Comm comm)
+PenalizationConfig PenalizationConfig::read()
 {
   PenalizationConfig c;
-  char mask[32] = "smooth";
-  VP_CALL(registerOptions(comm, c, mask, sizeof mask));
-  const std::string m = mask;
-  if (m == "smooth") c.mask = Mask::Smooth;
-  else if (m == "sharp") c.mask = Mask::Sharp;
-  else throw InputError("option -penalization_mask: unknown value '" + m + "' (valid: smooth, sharp)");
-  if (!(c.lambda >= 0) || !std::isfinite(c.lambda))
-    throw InputError("option -penalization_lambda: must be >= 0 (0: from the grid), got " + std::to_string(c.lambda));
-  if (!(c.width > 0 && c.width <= 4))
-    throw InputError("option -penalization_width: must be in (0, 4] cells, got " + std::to_string(c.width));
+  OptionGroup o("Volume penalization of the particles");
+  c.mask = static_cast<Mask>(o.choice("-penalization_mask", {"smooth", "sharp"}, 0, "Mask of a sphere on the faces"));
+  c.lambda = o.real("-penalization_lambda", c.lambda, "Penalization coefficient lambda (1/s); 0: 400 nu / h^2");
+  c.width = o.real("-penalization_width", c.width, "Width of the smooth mask (cells)");
   return c;
+}
+
+void PenalizationConfig::validate() const
+{
+  if (!(lambda >= 0)) failOption("-penalization_lambda", "must be >= 0 (0: from the grid), got " + formatNumber(lambda));
+  if (!(width > 0 && width <= 4)) failOption("-penalization_width", "must be in (0, 4] cells, got " + formatNumber(width));
 }
 
 Penalization::Penalization(const Grid& grid, const PenalizationConfig& cfg, double rho, double nu)

@@ -1,33 +1,15 @@
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/OptionDefaults.hpp"
+#include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <string>
 
 namespace vp {
 
-namespace {
-
-// -velocity_operator: 0 shell, 1 assembled.
-PetscErrorCode operatorKind(MPI_Comm comm, PetscInt* kind)
-{
-  const char* kinds[] = {"shell", "assembled"};
-  PetscFunctionBeginUser;
-  *kind = 0;
-  PetscOptionsBegin(comm, "velocity_", "Viscous (Helmholtz) solve", "vpsolve");
-  PetscCall(PetscOptionsEList("-operator", "shell: matrix-free stencil sweep (CG + Jacobi); assembled: AIJ matrix, "
-                              "for preconditioners that need one (hypre, gamg)", "", kinds, 2, kinds[0], kind, nullptr));
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
-
-} // namespace
-
 DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : grid_(grid), bc_(bc)
 {
-  PetscInt kind;
-  VP_CALL(operatorKind(grid.comm(), &kind));
-  assembled_ = kind == 1;
+  assembled_ = readSolverOptions().assembledViscous;
   setOptionDefault("-velocity_ksp_type", "cg");
   setOptionDefault("-velocity_pc_type", "jacobi");
   setOptionDefault("-velocity_ksp_norm_type", "unpreconditioned");

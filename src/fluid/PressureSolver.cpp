@@ -1,6 +1,7 @@
 #include "vp/fluid/PressureSolver.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/OptionDefaults.hpp"
+#include "vp/fluid/SolverOptions.hpp"
 #include "vp/fluid/FftPoisson.hpp"
 #include <algorithm>
 #include <string>
@@ -80,10 +81,9 @@ int mgLevels(const Grid& g)
 
 PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
 {
-  char pc[64] = "hypre";
+  const SolverOptions options = readSolverOptions();
+  const std::string& pcType = options.pressurePc;
   PetscBool set;
-  VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-pc_type", pc, sizeof pc, &set));
-  std::string pcType = pc;
   registerFftPreconditioner();
   if (pcType == "fft") {
     int size;
@@ -95,9 +95,7 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
                                           " ranks or -pressure_pc_type hypre, pfmg or mg");
   }
   // fft is an exact inverse: one application (preonly) is the solve.
-  char ksp[64] = "";
-  VP_CALL(PetscOptionsGetString(nullptr, "pressure_", "-ksp_type", ksp, sizeof ksp, &set));
-  const bool direct = set ? std::string(ksp) == KSPPREONLY : pcType == "fft";
+  const bool direct = !options.pressureKsp.empty() ? options.pressureKsp == KSPPREONLY : pcType == "fft";
   setOptionDefault("-pressure_ksp_type", direct ? KSPPREONLY : KSPCG);
   if (!direct) {
     setOptionDefault("-pressure_ksp_norm_type", "unpreconditioned");

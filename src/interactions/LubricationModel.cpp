@@ -22,7 +22,7 @@ void LubricationParams::complete(double cellSize, bool coupled, double saturatio
   // (docs/collisions.md, calibration): the correction starts there.
   if (activation == 0 && activationCells == 0 && coupled) activationCells = kDefaultActivationCells;
   gridGap_ = activationCells * cellSize;
-  if (saturation == 0) saturation = saturationFromRoughness;
+  if (saturation == 0) saturation = saturationFromRoughness > 0 ? saturationFromRoughness : kDefaultSaturation;
   if (model == LubModel::None) return;
   std::ostringstream msg;
   if (!(activation > 0 || activationCells > 0))

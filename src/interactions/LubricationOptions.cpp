@@ -1,34 +1,13 @@
 #include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include <cmath>
-#include <petscsys.h>
 #include <sstream>
 #include <string>
 
 namespace vp {
 
 namespace {
-
-PetscErrorCode registerOptions(MPI_Comm comm, LubricationParams& p, char* model, size_t len)
-{
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "Lubrication correction (gaps as fractions of the radius)", "vpsolve");
-  PetscCall(PetscOptionsString("-lub_model", "Lubrication model: none, blcm, llcm", "", model, model, len, nullptr));
-  PetscCall(PetscOptionsReal("-lub_activation",
-                             "Gap eps_act = h/a (a: the smaller radius of the pair) below which the unresolved force is added (0: -lub_activation_cells)",
-                             "", p.activation, &p.activation, nullptr));
-  PetscCall(PetscOptionsReal("-lub_activation_cells",
-                             "Activation gap in grid cells, the same for every pair (0: 0.2 in coupled runs)",
-                             "", p.activationCells, &p.activationCells, nullptr));
-  PetscCall(PetscOptionsReal("-lub_saturation",
-                             "Gap eps_sat = h/a below which the force is held constant (0: the contact roughness)",
-                             "", p.saturation, &p.saturation, nullptr));
-  PetscCall(PetscOptionsReal("-lub_llcm_r0",
-                             "LLCM lubrication-region radius r0 in units of the reduced radius (<= 1 keeps the parabolic gap valid)",
-                             "", p.llcmRegion, &p.llcmRegion, nullptr));
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
 
 [[noreturn]] void fail(const char* option, const std::string& what, double got)
 {
@@ -39,17 +18,19 @@ PetscErrorCode registerOptions(MPI_Comm comm, LubricationParams& p, char* model,
 
 } // namespace
 
-LubricationParams readLubricationOptions(MPI_Comm comm)
+LubricationParams readLubricationOptions()
 {
   LubricationParams p;
-  char model[64] = "none";
-  VP_CALL(registerOptions(comm, p, model, sizeof model));
-
-  const std::string name = model;
-  if (name == "none") p.model = LubModel::None;
-  else if (name == "blcm") p.model = LubModel::Blcm;
-  else if (name == "llcm") p.model = LubModel::Llcm;
-  else throw InputError("option -lub_model: unknown value '" + name + "' (valid: none, blcm, llcm)");
+  OptionGroup o("Lubrication correction (gaps as fractions of the radius)");
+  p.model = static_cast<LubModel>(o.choice("-lub_model", {"none", "blcm", "llcm"}, 0, "Lubrication model"));
+  p.activation = o.real("-lub_activation", p.activation, "Gap eps_act = h/a (a: the smaller radius of the pair) below which "
+                                                         "the unresolved force is added (0: -lub_activation_cells)");
+  p.activationCells = o.real("-lub_activation_cells", p.activationCells,
+                             "Activation gap in grid cells, the same for every pair (0: 0.2 in coupled runs)");
+  p.saturation = o.real("-lub_saturation", p.saturation, "Gap eps_sat = h/a below which the force is held constant "
+                                                         "(0: the contact roughness, or 4e-4 without one)");
+  p.llcmRegion = o.real("-lub_llcm_r0", p.llcmRegion,
+                        "LLCM lubrication-region radius r0 in units of the reduced radius (<= 1 keeps the parabolic gap valid)");
 
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     fail("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);

@@ -1,6 +1,8 @@
 #include "vp/io/Checkpoint.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include "vp/io/Hdf5.hpp"
+#include "vp/io/RunRecord.hpp"
 #include <cstdio>
 #include <map>
 #include <tuple>
@@ -157,6 +159,8 @@ void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const R
   h5::writeAttribute(file, "grid_lo", lo, 3);
   h5::writeAttribute(file, "grid_hi", hi, 3);
   h5::writeAttribute(file, "boundary_types", types, 6);
+  h5::writeAttribute(file, "setup_options", setupOptionsText());
+  h5::writeAttribute(file, "vpsolve_run", runRecord());
   VP_CALL(PetscViewerDestroy(&viewer));
 
   MPI_Barrier(comm_);
@@ -240,6 +244,8 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
       else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
+    // Older checkpoints lack it: their set-up is not compared.
+    if (error.empty()) h5::readAttribute(file, "setup_options", setup_);
     if (file >= 0) H5Fclose(file);
   }
   int length = static_cast<int>(error.size());
@@ -247,6 +253,10 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   error.resize(length);
   MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
   if (!error.empty()) failOption("-restart", error);
+  length = static_cast<int>(setup_.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  setup_.resize(length);
+  MPI_Bcast(setup_.data(), length, MPI_CHAR, 0, comm);
   for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
   unpackRun(header, run_);
   run_.fieldSnapshots = fieldSnaps;

@@ -2,25 +2,13 @@
 #include "vp/core/Error.hpp"
 #include "vp/fluid/Operators.hpp"
 #include "vp/io/Hdf5.hpp"
+#include "vp/io/RunRecord.hpp"
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <petscviewerhdf5.h>
 
 namespace vp {
-
-void makeOutputDir(MPI_Comm comm, const std::string& dir)
-{
-  int rank, ok = 1;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    ok = std::filesystem::is_directory(dir) ? 1 : 0;
-  }
-  MPI_Bcast(&ok, 1, MPI_INT, 0, comm);
-  if (!ok) throw InputError("option -output_dir: cannot create directory '" + dir + "'");
-}
 
 FieldWriter::FieldWriter(const Grid& grid, std::string dir) : grid_(grid), dir_(std::move(dir))
 {
@@ -88,6 +76,7 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure, 
     h5::writeAttribute(root, "step", &stepValue, 1, true);
     h5::writeAttribute(root, "origin", origin, 3, true);
     h5::writeAttribute(root, "spacing", spacing, 3, true);
+    h5::writeAttribute(root, "vpsolve_run", runRecord());
     H5Gclose(root);
     H5Fclose(file);
     snapshots_.emplace_back(step, time);

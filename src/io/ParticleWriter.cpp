@@ -1,6 +1,7 @@
 #include "vp/io/ParticleWriter.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/io/Hdf5.hpp"
+#include "vp/io/RunRecord.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -52,6 +53,7 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
   h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T, o, m, 3);
   h5::writeRows(file, "orientation", H5T_NATIVE_DOUBLE, orient.data(), T, o, m, 4);
   h5::writeAttribute(file, "time", &time, 1);
+  h5::writeAttribute(file, "vpsolve_run", runRecord());
   H5Fclose(file);
 
   snapshots_.push_back({step, time, total});

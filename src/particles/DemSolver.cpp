@@ -156,6 +156,7 @@ void DemSolver::computeForces(double dt)
       const double scale = r / (s.radius[i] + s.radius[j]);
       const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
       const ContactForce f = contactForce(n, reach - r, vc, P.laws[P.law[k]], P.spring[k], dt);
+      noteOverlap((reach - r) / (2 * std::min(s.radius[i], s.radius[j])), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
       const Vec3 lever = scale * cross(n, f.tangential);
       torqueI = -s.radius[i] * lever;
@@ -216,6 +217,7 @@ void DemSolver::computeForces(double dt)
             wallCoef = law_.coefficients(coefMass, true);
           }
           const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
+          noteOverlap(overlap / (2 * a), s.id[i], -1 - f);
           F += c.normal + c.tangential;
           T -= dist * cross(n, c.tangential);
           ++wallContacts;
@@ -245,6 +247,13 @@ void DemSolver::computeForces(double dt)
   }
   contacts_ = contacts;
   wallContacts_ = wallContacts;
+}
+
+OverlapRecord DemSolver::takeLargestOverlap()
+{
+  const OverlapRecord r = largestOverlap_;
+  largestOverlap_ = OverlapRecord{};
+  return r;
 }
 
 bool DemSolver::nearWall(const Vec3& x, double reach) const

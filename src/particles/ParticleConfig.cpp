@@ -2,8 +2,8 @@
 #include "vp/interactions/ContactOptions.hpp"
 #include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
 #include <cmath>
-#include <petscsys.h>
 #include <sstream>
 
 namespace vp {
@@ -13,91 +13,6 @@ namespace {
 [[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
 
 std::string str(double v) { return formatNumber(v); }
-
-void requireCount(PetscInt got, PetscInt want, PetscBool set, const char* option, const char* form)
-{
-  if (set && got != want)
-    fail(option, "needs " + std::to_string(want) + " comma-separated values (" + form + "), got " + std::to_string(got));
-}
-
-struct Raw {
-  char file[PETSC_MAX_PATH_LEN];
-  char track[4096];
-};
-
-PetscErrorCode registerOptions(MPI_Comm comm, ParticleConfig& c, Raw& raw)
-{
-  PetscBool set;
-  PetscInt n;
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "Particles: input", "vpsolve");
-  {
-    auto vec3Option = [&](const char* name, const char* help, Vec3& v, PetscBool* wasSet) -> PetscErrorCode {
-      PetscReal a[3] = {v.x, v.y, v.z};
-      PetscInt count = 3;
-      PetscFunctionBeginUser;
-      PetscCall(PetscOptionsRealArray(name, help, "", a, &count, wasSet));
-      requireCount(count, 3, *wasSet, name, "x,y,z");
-      v = {a[0], a[1], a[2]};
-      PetscFunctionReturn(0);
-    };
-    raw.file[0] = 0;
-    PetscCall(PetscOptionsString("-particles_file", "Particle file: CSV with header id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz, or HDF5 (.h5) with one 1-D dataset per column", "", raw.file, raw.file, sizeof raw.file, nullptr));
-    PetscReal lat[10] = {0};
-    n = 10;
-    PetscCall(PetscOptionsRealArray("-particles_lattice", "Cubic lattice x0,y0,z0,x1,y1,z1,spacing(m),radius(m),jitter(0..1),seed", "", lat, &n, &set));
-    requireCount(n, 10, set, "-particles_lattice", "x0,y0,z0,x1,y1,z1,spacing,radius,jitter,seed");
-    if (set) {
-      c.lattice.set = true;
-      c.lattice.lo = {lat[0], lat[1], lat[2]};
-      c.lattice.hi = {lat[3], lat[4], lat[5]};
-      c.lattice.spacing = lat[6];
-      c.lattice.radius = lat[7];
-      c.lattice.jitter = lat[8];
-      if (!(lat[9] >= 0) || lat[9] != std::floor(lat[9])) fail("-particles_lattice", "seed must be an integer >= 0, got " + str(lat[9]));
-      c.lattice.seed = static_cast<std::uint64_t>(lat[9]);
-    }
-    PetscReal rnd[9] = {0};
-    n = 9;
-    PetscCall(PetscOptionsRealArray("-particles_random", "Random packing x0,y0,z0,x1,y1,z1,volume_fraction,radius(m),seed", "", rnd, &n, &set));
-    requireCount(n, 9, set, "-particles_random", "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed");
-    if (set) {
-      c.random.set = true;
-      c.random.lo = {rnd[0], rnd[1], rnd[2]};
-      c.random.hi = {rnd[3], rnd[4], rnd[5]};
-      c.random.volumeFraction = rnd[6];
-      c.random.radius = rnd[7];
-      if (!(rnd[8] >= 0) || rnd[8] != std::floor(rnd[8])) fail("-particles_random", "seed must be an integer >= 0, got " + str(rnd[8]));
-      c.random.seed = static_cast<std::uint64_t>(rnd[8]);
-    }
-    PetscCall(vec3Option("-particle_position", "One particle at x,y,z (m)", c.single.position, &set));
-    c.single.set = set;
-    PetscCall(vec3Option("-particle_velocity", "Its velocity (m/s)", c.single.velocity, &set));
-    PetscCall(vec3Option("-particle_angular_velocity", "Its angular velocity (rad/s)", c.single.angularVelocity, &set));
-    PetscBool fixed = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particle_fixed", "Infinite mass: the particle keeps its given velocity and angular velocity, a prescribed motion (held in place without them)", "", fixed, &fixed, nullptr));
-    c.single.fixed = fixed;
-    PetscBool all = PETSC_FALSE;
-    PetscCall(PetscOptionsBool("-particles_fixed", "Every particle of infinite mass: held in place, or moving at its given constant velocity (forces still measured)", "", all, &all, nullptr));
-    c.allFixed = all;
-    PetscCall(PetscOptionsReal("-particle_radius", "Radius of the single particle and of generated ones (m)", "", c.radius, &c.radius, nullptr));
-    PetscCall(PetscOptionsReal("-particle_density", "Density of the single particle and of generated ones (kg/m^3)", "", c.density, &c.density, nullptr));
-    PetscCall(PetscOptionsReal("-particles_max_overlap", "Largest overlap accepted in the initial particles (fraction of the mean diameter; settled packings overlap slightly)", "", c.maxOverlap, &c.maxOverlap, nullptr));
-    raw.track[0] = 0;
-    PetscCall(PetscOptionsString("-track_particles", "Write particle_<id>.csv for these particles: all or id,id,...", "", raw.track, raw.track, sizeof raw.track, nullptr));
-  }
-  PetscOptionsEnd();
-
-  PetscOptionsBegin(comm, nullptr, "DEM time integration", "vpsolve");
-  {
-    PetscInt m = c.substeps;
-    PetscCall(PetscOptionsInt("-dem_substeps", "DEM sub-steps per fluid step", "", m, &m, nullptr));
-    c.substeps = m;
-    PetscCall(PetscOptionsReal("-dem_skin", "Neighbour-list skin, fraction of the largest diameter", "", c.skin, &c.skin, nullptr));
-  }
-  PetscOptionsEnd();
-  PetscFunctionReturn(0);
-}
 
 void parseTrack(const std::string& s, ParticleConfig& c)
 {
@@ -116,18 +31,62 @@ void parseTrack(const std::string& s, ParticleConfig& c)
   }
 }
 
+std::uint64_t seed(double v, const char* option)
+{
+  if (!(v >= 0) || v != std::floor(v)) fail(option, "seed must be an integer >= 0, got " + str(v));
+  return static_cast<std::uint64_t>(v);
+}
+
 } // namespace
 
-ParticleConfig ParticleConfig::fromOptions(MPI_Comm comm)
+ParticleConfig ParticleConfig::read()
 {
   ParticleConfig c;
-  Raw raw{};
-  VP_CALL(registerOptions(comm, c, raw));
-  c.file = raw.file;
-  parseTrack(raw.track, c);
-  c.contact = readContactOptions(comm);
-  c.lubrication = readLubricationOptions(comm);
-  c.validate();
+  {
+    OptionGroup o("Particles: input");
+    c.file = o.text("-particles_file", "", "Particle file: CSV with header id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz, "
+                                           "or HDF5 (.h5) with one 1-D dataset per column");
+    const std::vector<double> lat = o.reals("-particles_lattice", 10, "x0,y0,z0,x1,y1,z1,spacing,radius,jitter,seed",
+                                            "Cubic lattice x0,y0,z0,x1,y1,z1,spacing(m),radius(m),jitter(0..1),seed");
+    if (!lat.empty()) {
+      c.lattice.set = true;
+      c.lattice.lo = {lat[0], lat[1], lat[2]};
+      c.lattice.hi = {lat[3], lat[4], lat[5]};
+      c.lattice.spacing = lat[6];
+      c.lattice.radius = lat[7];
+      c.lattice.jitter = lat[8];
+      c.lattice.seed = seed(lat[9], "-particles_lattice");
+    }
+    const std::vector<double> rnd = o.reals("-particles_random", 9, "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed",
+                                            "Random packing x0,y0,z0,x1,y1,z1,volume_fraction,radius(m),seed");
+    if (!rnd.empty()) {
+      c.random.set = true;
+      c.random.lo = {rnd[0], rnd[1], rnd[2]};
+      c.random.hi = {rnd[3], rnd[4], rnd[5]};
+      c.random.volumeFraction = rnd[6];
+      c.random.radius = rnd[7];
+      c.random.seed = seed(rnd[8], "-particles_random");
+    }
+    c.single.position = o.vec3("-particle_position", {}, "One particle at x,y,z (m)", &c.single.set);
+    c.single.velocity = o.vec3("-particle_velocity", {}, "Its velocity (m/s)");
+    c.single.angularVelocity = o.vec3("-particle_angular_velocity", {}, "Its angular velocity (rad/s)");
+    c.single.fixed = o.flag("-particle_fixed", false, "Infinite mass: the particle keeps its given velocity and angular velocity, "
+                                                      "a prescribed motion (held in place without them)");
+    c.allFixed = o.flag("-particles_fixed", false, "Every particle of infinite mass: held in place, or moving at its given "
+                                                   "constant velocity (forces still measured)");
+    c.radius = o.real("-particle_radius", c.radius, "Radius of the single particle and of generated ones (m)");
+    c.density = o.real("-particle_density", c.density, "Density of the single particle and of generated ones (kg/m^3)");
+    c.maxOverlap = o.real("-particles_max_overlap", c.maxOverlap, "Largest overlap accepted in the initial particles "
+                                                                  "(fraction of the mean diameter; settled packings overlap slightly)");
+    parseTrack(o.text("-track_particles", "", "Write particle_<id>.csv for these particles: all or id,id,..."), c);
+  }
+  {
+    OptionGroup o("DEM time integration");
+    c.substeps = o.integer("-dem_substeps", c.substeps, "DEM sub-steps per fluid step");
+    c.skin = o.real("-dem_skin", c.skin, "Neighbour-list skin, fraction of the largest diameter");
+  }
+  c.contact = readContactOptions();
+  c.lubrication = readLubricationOptions();
   return c;
 }
 
@@ -156,7 +115,7 @@ void ParticleConfig::validate() const
       if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) fail("-particles_random", "box must be wider than a particle diameter along every axis");
   }
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) fail("-particles_max_overlap", "must be in [0, 0.5), got " + str(maxOverlap));
-  contact.validate(any());
+  contact.validate();
   if (substeps < 1) fail("-dem_substeps", "must be >= 1, got " + std::to_string(substeps));
   if (!(skin > 0 && skin <= 1)) fail("-dem_skin", "must be in (0, 1], got " + str(skin));
 }

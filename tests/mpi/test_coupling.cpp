@@ -70,7 +70,7 @@ TEST_CASE("Fixed sphere in a periodic box: Stokes drag within 3 % of Hasimoto at
   c.time.dt = 0.5;
   ScopedOptions o({{"-particle_position", "2,2,2"}, {"-particle_radius", "0.5"}, {"-particle_density", "2"},
                    {"-particle_fixed", ""}, {"-contact_tc", "1"}});
-  Simulation sim(PETSC_COMM_WORLD, c);
+  Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
   for (int k = 0; k < 120; ++k) sim.advance(c.time.dt);
   const double F = particleState(PETSC_COMM_WORLD, sim)[6];
   const double U = sim.fluid().stats().meanVelocity.x;
@@ -101,7 +101,7 @@ TEST_CASE("A sphere falling across subdomain boundaries: the same trajectory on 
     MPI_Comm sub;
     MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
     if (sub != MPI_COMM_NULL) {
-      Simulation sim(sub, c);
+      Simulation sim(sub, RunConfig(c));
       for (int k = 0; k < 25; ++k) sim.advance(c.time.dt);
       runs.push_back(particleState(sub, sim));
       MPI_Comm_free(&sub);
@@ -134,7 +134,7 @@ TEST_CASE("Density ratio 1.1: a released sphere accelerates smoothly towards its
   c.time.dt = 0.004;
   ScopedOptions o({{"-particle_position", "0.04,0.04,0.12"}, {"-particle_radius", "0.01"},
                    {"-particle_density", "1083.5"}, {"-contact_tc", "0.04"}});
-  Simulation sim(PETSC_COMM_WORLD, c);
+  Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
   double previous = 0, first = 0;
   bool monotone = true;
   for (int k = 0; k < 60; ++k) {
@@ -158,7 +158,7 @@ TEST_CASE("Without particles a run is bitwise the fluid core's: the coupling cos
   c.bc.type[5] = BcType::Velocity;
   c.bc.velocity[5] = {1, 0, 0};
   c.fluid.mu = 0.01;
-  Simulation sim(PETSC_COMM_WORLD, c);
+  Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
   REQUIRE(sim.particles() == nullptr);
   REQUIRE(sim.penalization() == nullptr);
   Grid grid(PETSC_COMM_WORLD, c.grid, c.bc);

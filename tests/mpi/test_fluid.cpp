@@ -198,7 +198,7 @@ TEST_CASE("every projection leaves max |div u| below 1e-6 |u|/dx", "[mpi][projec
   c.bc.velocity[3] = {1.0, 0, 0.5};
   c.fluid.mu = 0.01;
   c.time.maxSteps = 15;
-  Simulation sim(PETSC_COMM_WORLD, c);
+  Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
   double worst = 0;
   for (int s = 0; s < 15; ++s) {
     sim.advance(sim.nextDt());
@@ -221,7 +221,7 @@ TEST_CASE("Taylor-Green 2-D: second order in space and time, energy decays at 4 
     Config c = periodicBox(n, n, 2, 2 * M_PI / n * 2);
     c.fluid.init = InitFlow::TaylorGreen;
     c.time.final = 1.0;
-    Simulation sim(PETSC_COMM_WORLD, c);
+    Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
     const double ke0 = sim.fluid().stats().kineticEnergy;
     while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
     err.push_back(maxError(sim, AnalyticFlow(c)));
@@ -244,7 +244,7 @@ TEST_CASE("ABC flow 3-D: second order in all three components", "[mpi][convergen
     Config c = periodicBox(n, n, n, 2 * M_PI);
     c.fluid.init = InitFlow::Abc;
     c.time.final = 0.25;
-    Simulation sim(PETSC_COMM_WORLD, c);
+    Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
     while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
     err.push_back(maxError(sim, AnalyticFlow(c)));
   }
@@ -268,7 +268,7 @@ TEST_CASE("plane Poiseuille flow from rest reaches the exact parabola", "[mpi][c
   c.time.final = 3.0;
   c.output.files = false;
   c.output.monitorEvery = 0;
-  Simulation sim(PETSC_COMM_WORLD, c);
+  Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
   while (sim.time() < c.time.final * (1 - 1e-12)) sim.advance(sim.nextDt());
   Config exact = c;
   exact.fluid.init = InitFlow::Poiseuille;
@@ -297,7 +297,7 @@ TEST_CASE("the same run on 1, 2 and 3 ranks gives the same fields", "[mpi][invar
     MPI_Comm sub;
     MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
     if (sub != MPI_COMM_NULL) {
-      Simulation sim(sub, c);
+      Simulation sim(sub, RunConfig(c));
       for (int k = 0; k < 8; ++k) sim.advance(sim.nextDt());
       std::vector<double> all;
       for (auto [dm, v] : {std::pair{sim.grid().faceDM(), sim.fluid().velocity()},

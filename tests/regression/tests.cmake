@@ -5,8 +5,15 @@ set(VP_CASES ${PROJECT_SOURCE_DIR}/cases)
 
 # Bad input: a clear message naming the option and the valid values, and a non-zero exit.
 function(vp_bad_input name np regex)
-  add_test(NAME bad_input_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" $<TARGET_FILE:vpsolve> ${ARGN})
+  add_test(NAME bad_input_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" ${CMAKE_CURRENT_BINARY_DIR}/bad_input/${name}
+           $<TARGET_FILE:vpsolve> ${ARGN})
   set_tests_properties(bad_input_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+endfunction()
+# A failure found while running: the same, but the run's own files may be written.
+function(vp_run_failure name np regex)
+  add_test(NAME run_failure_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" ${CMAKE_CURRENT_BINARY_DIR}/run_failure/${name}
+           $<TARGET_FILE:vpsolve> ${ARGN})
+  set_tests_properties(run_failure_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1")
 endfunction()
 vp_bad_input(unknown_bc 1 "option -bc_ylo: unknown value 'wal' \\(valid: wall, slip, periodic, velocity\\)" -bc_ylo wal)
 vp_bad_input(one_sided_periodic 1 "option -bc_xhi: periodic must be set on both x faces" -bc_xlo periodic)
@@ -18,7 +25,7 @@ vp_bad_input(fft_too_many_ranks 3 "option -pressure_pc_type: fft splits the z ax
 vp_bad_input(missing_options_file 2 "option -options_file: cannot open 'no/such/case.opts'" -options_file no/such/case.opts)
 vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -output_every -1)
 vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)
-vp_bad_input(grid_n_two_values 1 "option -grid_n: needs 3 comma-separated values, got 2" -grid_n 8,8)
+vp_bad_input(grid_n_two_values 1 "option -grid_n: needs 3 comma-separated values \\(x,y,z\\), got 2" -grid_n 8,8)
 vp_bad_input(cfl_out_of_range 1 "option -time_cfl: must be in \\(0, 1\\], got 2" -time_cfl 2)
 vp_bad_input(unknown_init_flow 1 "option -init_flow: unknown value 'vortex' \\(valid: rest, taylor_green, abc, poiseuille\\)" -init_flow vortex)
 
@@ -72,7 +79,7 @@ vp_bad_input(particles_missing_file 1 "option -particles_file: cannot open" -opt
              -particles_file ${VP_DEM_DATA}/no_such_file.csv)
 vp_bad_input(contact_restitution 1 "option -contact_restitution: must be in \\(0, 1\\], got 1.5"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution 1.5)
-vp_bad_input(contact_no_stiffness 1 "option -contact_tc: particles need a contact stiffness"
+vp_bad_input(contact_no_stiffness 1 "option -contact_tc: a DEM-only run needs a contact stiffness"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_tc 0)
 # A subdomain thinner than the particle halo (2 ranks on a 4 mm box, 2 mm spheres).
 vp_bad_input(particles_thin_subdomain 2 "thinner than the particle halo" -options_file ${VP_DEM_DATA}/box.opts
@@ -93,8 +100,8 @@ set_tests_properties(dem_case_granular_collapse_dry PROPERTIES ENVIRONMENT "${VP
 # Lubrication in DEM-only runs: no grid to tie the gaps to, so they must be given.
 vp_bad_input(lub_needs_activation 1 "option -lub_activation: must be > 0 \\(gap over radius\\), got 0"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model blcm)
-vp_bad_input(lub_needs_saturation 1 "option -lub_saturation: must be in \\(0, -lub_activation = 0.1\\), got 0"
-             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1)
+vp_bad_input(lub_saturation_above_activation 1 "option -lub_saturation: must be below -lub_activation \\(0.1\\), got 0.2"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1 -lub_saturation 0.2)
 vp_bad_input(contact_hydro_unknown 1 "option -contact_hydro: unknown value 'off' \\(valid: keep, exclude, limit\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro off)
 vp_bad_input(contact_restitution_t 1 "option -contact_restitution_t: must be in \\(0, 1\\] \\(0: not set\\), got 2"
@@ -103,7 +110,7 @@ vp_bad_input(lub_activation_twice 1 "option -lub_activation_cells: give either -
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1 -lub_activation_cells 2)
 # The saturated lubrication is an explicit dashpot: a sphere at the saturation gap with a sub-step
 # beyond its bound stops the run.
-vp_bad_input(lub_unstable_substep 1 "option -dem_substeps: the DEM sub-step .* is unstable for the lubrication .* raise -dem_substeps to at least"
+vp_run_failure(lub_unstable_substep 1 "option -dem_substeps: the DEM sub-step .* is unstable for the lubrication .* raise -dem_substeps to at least"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.0010003 -particle_radius 0.001
              -lub_model blcm -lub_activation 0.1 -contact_roughness 1e-4 -fluid_mu 10 -time_dt 1e-3 -dem_substeps 1)
 vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(valid: none, blcm, llcm\\)"

@@ -27,7 +27,7 @@ std::string errorOf(std::initializer_list<std::pair<const char*, const char*>> k
 {
   ScopedOptions o{kv};
   try {
-    readLubricationOptions(PETSC_COMM_SELF);
+    readLubricationOptions();
   } catch (const InputError& e) {
     return e.what();
   }
@@ -39,14 +39,14 @@ std::string errorOf(std::initializer_list<std::pair<const char*, const char*>> k
 TEST_CASE("Lubrication options: defaults and values", "[lub]")
 {
   {
-    const LubricationParams p = readLubricationOptions(PETSC_COMM_SELF);
+    const LubricationParams p = readLubricationOptions();
     CHECK(p.model == LubModel::None);
     CHECK(p.activation == 0);
     CHECK(p.saturation == 0);
     CHECK(p.llcmRegion == 1);
   }
   ScopedOptions o{{"-lub_model", "llcm"}, {"-lub_activation", "0.1"}, {"-lub_saturation", "4e-4"}, {"-lub_llcm_r0", "0.5"}};
-  const LubricationParams p = readLubricationOptions(PETSC_COMM_SELF);
+  const LubricationParams p = readLubricationOptions();
   CHECK(p.model == LubModel::Llcm);
   CHECK(p.activation == 0.1);
   CHECK(p.saturation == 4e-4);

@@ -1,7 +1,7 @@
 #pragma once
-// Typed, validated run configuration read from the PETSc options database. Every option is
-// registered with PetscOptions* so that -help lists it with its default and unit; values are
-// checked once, here, and bad values raise vp::InputError naming the option and the valid range.
+// The fluid, grid, time and output part of the run configuration (the whole of it is RunConfig,
+// include/vp/RunConfig.hpp). read() parses the options (vp/core/Options.hpp); validate() checks
+// ranges and consistency and raises vp::InputError naming the option and the valid range.
 #include "vp/core/Vec3.hpp"
 #include <array>
 #include <mpi.h>
@@ -42,8 +42,9 @@ struct TimeConfig {
   double final = 1.0;                      // end time [s]
   int maxSteps = 1000000;
   double cfl = 0.5;
-  double dtMax = 0;                        // 0: set from the grid (min h^2 / nu)
+  double dtMax = 0;                        // 0: min(h^2 / nu, final / 10)
   double dt = 0;                           // > 0: fixed step
+  double wallLimit = 0;                    // -time_wall_limit: stop with a checkpoint after this wall time [s]
 };
 
 struct OutputConfig {
@@ -52,6 +53,13 @@ struct OutputConfig {
   double dt = 0;                           // simulated time between snapshots (0: none)
   int monitorEvery = 10;                   // steps between progress lines (0: none)
   bool files = true;                       // false: no files at all (library use in tests)
+  bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
+};
+
+// Checks after every step that stop a run going wrong (docs/robustness.md).
+struct HealthConfig {
+  double cflMax = 1.0;                     // -health_cfl_max: with a fixed -time_dt
+  double overlapMax = 0.1;                 // -health_overlap_max: contact overlap / smaller diameter
 };
 
 // Checkpoint/restart (docs/outputs.md).
@@ -60,6 +68,7 @@ struct CheckpointConfig {
   int every = 0;                           // steps between checkpoints (0: none)
   double dt = 0;                           // simulated time between checkpoints (0: none)
   int keep = 2;                            // checkpoints of this run kept on disk (older ones deleted)
+  bool allowChanges = false;               // -restart_allow_changes: warn about changed set-up options
   bool on() const { return every > 0 || dt > 0; }
 };
 
@@ -71,9 +80,10 @@ struct Config {
   TimeConfig time;
   OutputConfig output;
   CheckpointConfig checkpoint;
+  HealthConfig health;
 
-  // Reads and validates all options (collective; throws InputError on bad input).
-  static Config fromOptions(MPI_Comm comm);
+  // Parses the options (throws InputError on a value that does not parse).
+  static Config read();
   // Checks the values (also used for configurations built in code, e.g. by tests).
   void validate() const;
 };

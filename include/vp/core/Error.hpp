@@ -11,6 +11,12 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A run stopped by a failed health check (docs/robustness.md): raised on every rank alike, after a
+// snapshot for inspection; vpsolve exits with status 3.
+struct RunFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct PetscFailure : std::runtime_error {
   PetscFailure(PetscErrorCode code, const char* file, int line);
   PetscErrorCode code;

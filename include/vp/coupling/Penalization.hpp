@@ -19,7 +19,8 @@ struct PenalizationConfig {
   double lambda = 0;  // [1/s]; 0: 400 nu / h^2 (penetration length sqrt(nu/lambda) = h/20)
   double width = 1;   // smoothing width in cells
 
-  static PenalizationConfig fromOptions(MPI_Comm comm);  // -penalization_*; throws InputError
+  static PenalizationConfig read();  // -penalization_*
+  void validate() const;             // throws InputError
 };
 
 // Per particle (local index, owned and ghost), the sums one fluid step contributes:

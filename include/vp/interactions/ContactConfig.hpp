@@ -26,8 +26,9 @@ struct ContactConfig {
   double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
   ContactHydro hydro = ContactHydro::Limit;  // measured: docs/collisions.md
 
-  // Throws InputError naming the option and the valid range. particles: a stiffness is required.
-  void validate(bool particles) const;
+  bool stiffnessGiven() const { return tc > 0 || tcSteps > 0 || kn > 0; }
+  // Throws InputError naming the option and the valid range.
+  void validate() const;
 };
 
 } // namespace vp

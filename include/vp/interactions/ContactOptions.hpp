@@ -1,11 +1,10 @@
 #pragma once
-// Reads the -contact_* options from the PETSc options database (listed by -help); the caller
+// Reads the -contact_* options (vp/core/Options.hpp, listed by -help); the caller
 // validates them with ContactConfig::validate once it knows whether the run has particles.
 #include "vp/interactions/ContactConfig.hpp"
-#include <mpi.h>
 
 namespace vp {
 
-ContactConfig readContactOptions(MPI_Comm comm);
+ContactConfig readContactOptions();
 
 } // namespace vp

@@ -1,14 +1,13 @@
 #pragma once
-// Reads the lubrication options from the PETSc options database (listed by -help):
+// Reads the lubrication options (vp/core/Options.hpp, listed by -help):
 //   -lub_model none|blcm|llcm   -lub_activation eps_act | -lub_activation_cells n
 //   -lub_saturation eps_sat   -lub_llcm_r0 R0
 // Gaps are fractions of the radius (or cells); 0 for activation/saturation means "set by the caller"
 // (LubricationParams::complete). Throws InputError naming the option and its valid range.
 #include "vp/interactions/LubricationModel.hpp"
-#include <mpi.h>
 
 namespace vp {
 
-LubricationParams readLubricationOptions(MPI_Comm comm);
+LubricationParams readLubricationOptions();
 
 } // namespace vp

@@ -52,6 +52,8 @@ public:
   CheckpointReader(MPI_Comm comm, const std::string& path, const Config& cfg);
 
   const RunState& run() const { return run_; }
+  // "-name value" lines of the writing run's set-up options ("" in checkpoints older than them).
+  const std::string& setupOptions() const { return setup_; }
   // Every particle (the same list on every rank), springs attached.
   const std::vector<ParticleRecord>& particles() const { return particles_; }
   // Collective: reads the fluid vectors.
@@ -61,6 +63,7 @@ private:
   MPI_Comm comm_;
   std::string path_;
   RunState run_;
+  std::string setup_;
   std::vector<ParticleRecord> particles_;
 };
 

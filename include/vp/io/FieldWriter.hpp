@@ -35,7 +35,4 @@ private:
   std::vector<std::pair<int, double>> snapshots_;
 };
 
-// Creates a directory (and parents) on rank 0; throws InputError naming the option if impossible.
-void makeOutputDir(MPI_Comm comm, const std::string& dir);
-
 } // namespace vp

@@ -24,6 +24,13 @@ struct DemDiagnostics {
   long wallContacts = 0;      // sphere-wall contacts
 };
 
+// The deepest contact since it was last taken: overlap / smaller diameter, the particle ids (a
+// wall as -1 - face index).
+struct OverlapRecord {
+  double fraction = 0;
+  std::int64_t i = -1, j = -1;
+};
+
 class DemSolver {
 public:
   // Particles from the options (-particles_file, generators, single particle).
@@ -52,6 +59,8 @@ public:
   void syncGhosts() { exchange_->updateGhosts(store_); }
   const ContactLaw& law() const { return law_; }
   std::size_t rebuilds() const { return rebuilds_; }
+  // This rank's deepest contact since the last call (the health check reads it once per step).
+  OverlapRecord takeLargestOverlap();
 
 private:
   void setUp(const std::vector<ParticleRecord>& all, bool restart);
@@ -82,6 +91,10 @@ private:
   // naming the options once a pair is unstable).
   void watchLubrication(const PairState& st, double contactGap, double invMassSum);
   void checkLubricationSeen(double dtp);
+  void noteOverlap(double fraction, std::int64_t i, std::int64_t j)
+  {
+    if (fraction > largestOverlap_.fraction) largestOverlap_ = {fraction, i, j};
+  }
 
   const Grid& grid_;
   ParticleConfig pc_;
@@ -108,6 +121,7 @@ private:
   long contacts_ = 0, wallContacts_ = 0;
   double kineticEnergy_ = -1;   // of the owned particles after the last sub-step (-1: none yet)
   std::size_t rebuilds_ = 0;
+  OverlapRecord largestOverlap_;
 };
 
 } // namespace vp

@@ -1,12 +1,11 @@
 #pragma once
-// Particle, contact and DEM options (-particles_*, -particle_*, -contact_*, -dem_*, -track_particles),
-// read from the PETSc options database and validated once; bad values raise vp::InputError naming
-// the option and the valid range.
+// Particle, contact and DEM options (-particles_*, -particle_*, -contact_*, -dem_*, -track_particles):
+// read() parses them (vp/core/Options.hpp), validate() checks them; bad values raise
+// vp::InputError naming the option and the valid range.
 #include "vp/core/Vec3.hpp"
 #include "vp/interactions/ContactConfig.hpp"
 #include "vp/interactions/LubricationModel.hpp"
 #include <cstdint>
-#include <mpi.h>
 #include <string>
 #include <vector>
 
@@ -56,7 +55,7 @@ struct ParticleConfig {
 
   bool any() const { return !file.empty() || lattice.set || random.set || single.set; }
 
-  static ParticleConfig fromOptions(MPI_Comm comm);
+  static ParticleConfig read();
   void validate() const;
 };
 

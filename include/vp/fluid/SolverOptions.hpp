@@ -1,0 +1,16 @@
+#pragma once
+// The solver options vpsolve interprets itself (listed by -help, written to run.json); every other
+// -pressure_* / -velocity_* option goes to PETSc's KSP and PC objects unchanged (docs/fluid.md).
+#include <string>
+
+namespace vp {
+
+struct SolverOptions {
+  std::string pressurePc;        // -pressure_pc_type: hypre (BoomerAMG), fft, pfmg, mg or another PETSc PC
+  std::string pressureKsp;       // -pressure_ksp_type ("" : cg, or preonly with fft)
+  bool assembledViscous = false; // -velocity_operator assembled
+};
+
+SolverOptions readSolverOptions();
+
+} // namespace vp

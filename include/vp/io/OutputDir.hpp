@@ -1,0 +1,19 @@
+#pragma once
+// One output directory holds one run (docs/outputs.md). A new run refuses a directory that holds
+// another run's outputs, unless -output_overwrite (the old outputs are removed first) or -restart
+// (the run continues them). Collective; InputError names the option to use.
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace vp {
+
+// The files of a run found in dir (run.json, diagnostics.csv, fields/particles/checkpoint files,
+// particle_<id>.csv, their .xmf indices).
+std::vector<std::string> runOutputs(const std::string& dir);
+// No side effects: throws InputError if the run may not write into dir.
+void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
+// Creates dir; with overwrite (and no restart) removes the previous run's outputs.
+void prepareOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
+
+} // namespace vp

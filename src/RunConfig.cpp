@@ -1,0 +1,109 @@
+#include "vp/RunConfig.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
+#include <cmath>
+#include <fstream>
+#include <petscsys.h>
+#include <string>
+
+namespace vp {
+
+namespace {
+
+// Measured peak resident memory (docs/robustness.md): about 45 MB per rank plus 0.95 kB per cell
+// with BoomerAMG (0.74 kB with fft) on the 32^3 and 64^3 cavities.
+constexpr double kBytesPerRank = 50e6, kBytesPerCell = 1000, kBytesPerBucket = 16;
+
+double availableBytes()
+{
+  std::ifstream in("/proc/meminfo");
+  std::string key, unit;
+  double kb;
+  while (in >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb * 1024;
+  return 0;  // unknown: no check
+}
+
+std::string gigabytes(double b)
+{
+  char s[32];
+  std::snprintf(s, sizeof s, "%.2f GB", b / 1e9);
+  return s;
+}
+
+} // namespace
+
+RunConfig::RunConfig(const Config& c) : RunConfig(read()) { main = c; }
+
+RunConfig RunConfig::read()
+{
+  RunConfig r;
+  r.main = Config::read();
+  r.particles = ParticleConfig::read();
+  r.penalization = PenalizationConfig::read();
+  r.solvers = readSolverOptions();
+  OptionGroup o("Run control", false);
+  r.allowUnknownOptions = o.flag("-options_allow_unknown", false, "Only warn about options nothing reads (misspelt ones)");
+  r.memoryCheck = o.flag("-memory_check", true, "Refuse a run whose estimated memory exceeds what the nodes have available");
+  return r;
+}
+
+void RunConfig::validate(MPI_Comm comm) const
+{
+  main.validate();
+  particles.validate();
+  penalization.validate();
+  if (main.fluid.off && !particles.any())
+    failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+  if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
+    failOption("-contact_tc", "a DEM-only run needs a contact stiffness: set -contact_tc, -contact_tc_steps or -contact_kn");
+  if (memoryCheck) checkMemory(comm);
+}
+
+void RunConfig::checkMemory(MPI_Comm comm) const
+{
+  int size, nodeRank, nodeSize;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm node;
+  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  MPI_Comm_rank(node, &nodeRank);
+  MPI_Comm_size(node, &nodeSize);
+  MPI_Comm_free(&node);
+  const GridConfig& g = main.grid;
+  const double cells = double(g.n[0]) * g.n[1] * g.n[2];
+  double perRank = kBytesPerRank + kBytesPerCell * cells / size;
+  if (particles.any()) {
+    // Contact search cells of about a diameter over each subdomain (docs/particles.md).
+    const double r = particles.lattice.set ? particles.lattice.radius
+                     : particles.random.set ? particles.random.radius : particles.radius;
+    double buckets = 1;
+    for (int d = 0; d < 3; ++d) buckets *= std::ceil((g.hi[d] - g.lo[d]) / (2 * r)) + 2;
+    perRank += kBytesPerBucket * buckets / size;
+  }
+  const double need = perRank * nodeSize, have = availableBytes();
+  int bad = have > 0 && need > 0.9 * have ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);
+  if (bad)
+    failOption("-grid_n", "the run needs about " + gigabytes(need) + " per node (" + std::to_string(nodeSize) + " ranks), " +
+                              "the node has " + gigabytes(have) + " available; use more nodes, a coarser grid or larger "
+                              "particles (-memory_check 0 to try anyway)");
+}
+
+void checkUnknownOptions(MPI_Comm comm, bool allow)
+{
+  const std::vector<std::string> unknown = unusedOptions();
+  if (unknown.empty()) return;
+  std::string list;
+  for (const auto& name : unknown) {
+    const std::string near = nearestOption(name);
+    list += "\n  " + name + (near.empty() ? "" : "  (did you mean " + near + "?)");
+  }
+  if (allow) {
+    PetscPrintf(comm, "vpsolve: warning: options nothing reads (-options_allow_unknown):%s\n", list.c_str());
+    return;
+  }
+  throw InputError("unknown option(s), not read by vpsolve or its solvers:" + list +
+                   "\n(vpsolve -help lists the options; -options_allow_unknown accepts them)");
+}
+
+} // namespace vp

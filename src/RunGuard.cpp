@@ -1,0 +1,90 @@
+#include "vp/RunGuard.hpp"
+#include "vp/core/Error.hpp"
+#include <csignal>
+#include <cmath>
+
+namespace vp {
+
+namespace {
+
+volatile std::sig_atomic_t stopSignal = 0;
+
+extern "C" void onStopSignal(int s) { stopSignal = s; }
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string num(double v) { return formatNumber(v); }
+
+std::string where(const Vec3& x) { return "(" + num(x.x) + ", " + num(x.y) + ", " + num(x.z) + ")"; }
+
+} // namespace
+
+void installStopSignals()
+{
+  struct sigaction a {};
+  a.sa_handler = onStopSignal;
+  sigemptyset(&a.sa_mask);
+  sigaction(SIGTERM, &a, nullptr);
+  sigaction(SIGINT, &a, nullptr);
+}
+
+std::string RunGuard::localProblem(double dt, const ops::FieldStats& flow, DemSolver* dem) const
+{
+  if (!cfg_.fluid.off) {
+    if (!std::isfinite(flow.kineticEnergy) || !std::isfinite(flow.maxRate))
+      return "the flow blew up (non-finite velocity); reduce -time_cfl, -time_dt or -time_dt_max";
+    const double cfl = dt * flow.maxRate;
+    if (cfg_.time.dt > 0 && cfl > cfg_.health.cflMax)
+      return "CFL number " + num(cfl) + " exceeds -health_cfl_max " + num(cfg_.health.cflMax) + " with the fixed step -time_dt " +
+             num(cfg_.time.dt) + "; reduce -time_dt or leave it out for the CFL-adaptive step";
+  }
+  if (!dem) return "";
+  const ParticleStore& s = dem->particles();
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    const std::string id = "particle " + std::to_string(s.id[i]);
+    if (!finite(s.x[i]) || !finite(s.v[i]) || !finite(s.w[i]))
+      return id + " has a non-finite position or velocity; reduce the step (-time_dt, -dem_substeps up) or check the forces (-gravity, -contact_*)";
+    for (int d = 0; d < 3; ++d) {
+      if (cfg_.bc.periodic(d)) continue;
+      if (s.x[i][d] < cfg_.grid.lo[d] || s.x[i][d] > cfg_.grid.hi[d])
+        return id + " left the box: centre at " + where(s.x[i]) + ", velocity " + where(s.v[i]) +
+               " m/s; a contact too soft for the step (-contact_tc, -time_dt, -dem_substeps) or a bad initial velocity";
+    }
+  }
+  const OverlapRecord o = dem->takeLargestOverlap();
+  if (o.fraction > cfg_.health.overlapMax) {
+    const std::string with = o.j < 0 ? "the " + std::string("xyz").substr((-1 - o.j) / 2, 1) + ((-1 - o.j) % 2 ? "hi" : "lo") + " wall"
+                                     : "particle " + std::to_string(o.j);
+    return "contact between particle " + std::to_string(o.i) + " and " + with + " overlaps by " + num(100 * o.fraction) +
+           " % of the smaller diameter (-health_overlap_max " + num(cfg_.health.overlapMax) +
+           "): the contact is too soft for the step or the impact; shorten -contact_tc (or raise -contact_kn) or the step (-time_dt, -dem_substeps)";
+  }
+  return "";
+}
+
+StepVerdict RunGuard::check(int step, double time, double dt, const ops::FieldStats& flow, DemSolver* dem,
+                            double elapsed, double lastStep)
+{
+  int rank, size;
+  MPI_Comm_rank(comm_, &rank);
+  MPI_Comm_size(comm_, &size);
+  const std::string problem = localProblem(dt, flow, dem);
+  // One reduction: the lowest rank with a problem, a signal, the wall-time limit.
+  const bool limit = cfg_.time.wallLimit > 0 && elapsed + 1.5 * lastStep > cfg_.time.wallLimit;
+  int in[3] = {problem.empty() ? 0 : size - rank, int(stopSignal), limit ? 1 : 0}, out[3];
+  MPI_Allreduce(in, out, 3, MPI_INT, MPI_MAX, comm_);
+  StepVerdict v;
+  v.signal = out[1];
+  v.wallLimit = out[2] != 0;
+  if (out[0] > 0) {
+    const int from = size - out[0];
+    int length = rank == from ? int(problem.size()) : 0;
+    MPI_Bcast(&length, 1, MPI_INT, from, comm_);
+    v.problem = rank == from ? problem : std::string(length, ' ');
+    MPI_Bcast(v.problem.data(), length, MPI_CHAR, from, comm_);
+    v.problem = "step " + std::to_string(step) + ", t = " + num(time) + " s: " + v.problem;
+  }
+  return v;
+}
+
+} // namespace vp

@@ -1,0 +1,21 @@
+#include "vp/fluid/SolverOptions.hpp"
+#include "vp/core/Options.hpp"
+
+namespace vp {
+
+SolverOptions readSolverOptions()
+{
+  SolverOptions s;
+  OptionGroup o("Solvers (any PETSc KSP/PC option with the prefix -pressure_ or -velocity_ also applies)", false);
+  s.pressurePc = o.text("-pressure_pc_type", "hypre", "Pressure preconditioner: hypre (BoomerAMG, tuned), fft (exact direct "
+                                                      "solve on the uniform grid), pfmg, mg, or another PETSc PC");
+  s.pressureKsp = o.text("-pressure_ksp_type", "", "Pressure Krylov method (default cg; preonly with fft)");
+  o.real("-pressure_ksp_rtol", 1e-6, "Pressure relative tolerance (measured choice, docs/fluid.md)");
+  s.assembledViscous = o.choice("-velocity_operator", {"shell", "assembled"}, 0,
+                                "Viscous operator: shell (matrix-free sweep, CG + Jacobi) or assembled (AIJ, for "
+                                "preconditioners that need a matrix: hypre, gamg)") == 1;
+  o.real("-velocity_ksp_rtol", 1e-6, "Viscous relative tolerance (measured choice, docs/fluid.md)");
+  return s;
+}
+
+} // namespace vp

@@ -1,0 +1,71 @@
+#include "vp/io/OutputDir.hpp"
+#include "vp/core/Error.hpp"
+#include <filesystem>
+#include <regex>
+
+namespace fs = std::filesystem;
+
+namespace vp {
+
+std::vector<std::string> runOutputs(const std::string& dir)
+{
+  static const std::regex names(R"((run\.json|diagnostics\.csv|probes\.csv|(fields|particles)\.xmf|)"
+                                R"((fields|particles|checkpoint)_(\d{6}|latest)\.h5|particle_\d+\.csv))");
+  std::vector<std::string> out;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return out;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (std::regex_match(e.path().filename().string(), names)) out.push_back(e.path().filename().string());
+  return out;
+}
+
+namespace {
+
+// Rank 0 decides; every rank throws the same error.
+void agree(MPI_Comm comm, std::string error)
+{
+  int rank, length;
+  MPI_Comm_rank(comm, &rank);
+  length = rank == 0 ? int(error.size()) : 0;
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  error.resize(length);
+  MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
+  if (!error.empty()) throw InputError(error);
+}
+
+} // namespace
+
+void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite)
+{
+  int rank;
+  MPI_Comm_rank(comm, &rank);
+  std::string error;
+  if (rank == 0) {
+    std::error_code ec;
+    const std::vector<std::string> old = runOutputs(dir);
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+      error = "option -output_dir: '" + dir + "' exists and is not a directory";
+    else if (!old.empty() && !restart && !overwrite)
+      error = "option -output_dir: '" + dir + "' holds another run (" + std::to_string(old.size()) + " files: " + old.front() +
+              (old.size() > 1 ? ", ..." : "") + "); choose another -output_dir, continue it with -restart " + dir +
+              "/checkpoint_latest.h5, or give -output_overwrite to replace it";
+  }
+  agree(comm, error);
+}
+
+void prepareOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite)
+{
+  int rank;
+  MPI_Comm_rank(comm, &rank);
+  std::string error;
+  if (rank == 0) {
+    std::error_code ec;
+    if (overwrite && !restart)
+      for (const auto& f : runOutputs(dir)) fs::remove(fs::path(dir) / f, ec);
+    fs::create_directories(dir, ec);
+    if (!fs::is_directory(dir, ec)) error = "option -output_dir: cannot create directory '" + dir + "'";
+  }
+  agree(comm, error);
+}
+
+} // namespace vp
