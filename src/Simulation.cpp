@@ -283,22 +283,17 @@ int Simulation::run()
     const double t0 = MPI_Wtime();
     try {
       advance(dt);
-    } catch (const InputError&) {
+    } catch (const PetscFailure&) {
       throw;
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error("step " + std::to_string(step_ + 1) + ", t = " + formatNumber(time_ + dt) + " s, dt = " +
-                               formatNumber(dt) + " s: " + e.what());
+    } catch (const std::exception& e) {
+      // Solver divergence, unstable lubrication, lost particles: decided collectively.
+      stopOnFailure("in the step of dt = " + formatNumber(dt) + " s to t = " + formatNumber(time_ + dt) + " s: " + e.what(),
+                    loopStart);
     }
     wallLastStep_ = MPI_Wtime() - t0;
     record();
-    const StepVerdict v = guard_.check(step_, time_, dt, fluid_->stats(), dem_.get(), MPI_Wtime() - wallStart_, wallLastStep_);
-    if (!v.problem.empty()) {
-      output();  // for inspection
-      loopWall_ = MPI_Wtime() - loopStart;
-      finish("health check failed: " + v.problem);
-      throw RunFailure("the run stopped on a failed health check (above); the snapshot of step " + std::to_string(step_) +
-                       " is written for inspection");
-    }
+    const StepVerdict v = guard_.check(dt, fluid_->stats(), dem_.get(), MPI_Wtime() - wallStart_, wallLastStep_);
+    if (!v.problem.empty()) stopOnFailure(v.problem, loopStart);
     if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
       monitor(dt);
       if (tracker_) tracker_->flush();  // a running case's particle_<id>.csv can be followed too
@@ -322,6 +317,14 @@ int Simulation::run()
   if (tracker_) tracker_->flush();
   finish(stop);
   return status;
+}
+
+void Simulation::stopOnFailure(const std::string& problem, double loopStart)
+{
+  output();  // the state that failed, for inspection
+  loopWall_ = MPI_Wtime() - loopStart;
+  finish("failed: " + problem);
+  throw RunFailure("the run stopped (above); the snapshot of step " + std::to_string(step_) + " is written for inspection");
 }
 
 void Simulation::record()

@@ -23,9 +23,9 @@ struct StepVerdict {
 class RunGuard {
 public:
   RunGuard(MPI_Comm comm, const Config& cfg) : comm_(comm), cfg_(cfg) {}
-  // Collective. elapsed: wall time of the run so far; lastStep: of the last step [s].
-  StepVerdict check(int step, double time, double dt, const ops::FieldStats& flow, DemSolver* dem, double elapsed,
-                    double lastStep);
+  // Collective, after a step of size dt. elapsed: wall time of the run so far; lastStep: of the
+  // last step [s].
+  StepVerdict check(double dt, const ops::FieldStats& flow, DemSolver* dem, double elapsed, double lastStep);
 
 private:
   // This rank's first problem, "" if none.

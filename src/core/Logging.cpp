@@ -5,7 +5,7 @@ namespace vp {
 
 namespace {
 constexpr int kStages = static_cast<int>(Stage::Count);
-const char* const kNames[kStages] = {"Advection", "Diffusion", "Pressure", "Penalization", "HydroForce", "DEM", "Exchange", "IO"};
+const char* const kNames[kStages] = {"Advection", "Diffusion", "Pressure", "Penalization", "HydroForce", "DEM", "Exchange", "IO", "Health"};
 double seconds[kStages] = {};
 } // namespace
 

@@ -7,13 +7,13 @@ set(VP_CASES ${PROJECT_SOURCE_DIR}/cases)
 function(vp_bad_input name np regex)
   add_test(NAME bad_input_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" ${CMAKE_CURRENT_BINARY_DIR}/bad_input/${name}
            $<TARGET_FILE:vpsolve> ${ARGN})
-  set_tests_properties(bad_input_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+  set_tests_properties(bad_input_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};EXPECT_STATUS=1")
 endfunction()
 # A failure found while running: the same, but the run's own files may be written.
 function(vp_run_failure name np regex)
   add_test(NAME run_failure_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" ${CMAKE_CURRENT_BINARY_DIR}/run_failure/${name}
            $<TARGET_FILE:vpsolve> ${ARGN})
-  set_tests_properties(run_failure_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1")
+  set_tests_properties(run_failure_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1;EXPECT_STATUS=3")
 endfunction()
 vp_bad_input(unknown_bc 1 "option -bc_ylo: unknown value 'wal' \\(valid: wall, slip, periodic, velocity\\)" -bc_ylo wal)
 vp_bad_input(one_sided_periodic 1 "option -bc_xhi: periodic must be set on both x faces" -bc_xlo periodic)
@@ -166,3 +166,40 @@ add_test(NAME checkpoint_dt_keep
                  && test $(readlink ckpt_dt/checkpoint_latest.h5) = checkpoint_000020.h5 \
                  && test -z \"$(ls ckpt_dt | grep tmp)\"")
 set_tests_properties(checkpoint_dt_keep PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+
+# --- Robust runs: bad input and faults (docs/robustness.md lists each with its message) ----------
+vp_bad_input(unknown_option 1 "-grid_nn +\\(did you mean -grid_n\\?\\)" -grid_nn 8,8,8)
+vp_bad_input(unknown_solver_option 1 "-pressure_ksp_rtoll +\\(did you mean -pressure_ksp_rtol\\?\\)" -pressure_ksp_rtoll 1e-8)
+vp_bad_input(vector_too_long 1 "option -grid_n: needs 3 comma-separated values \\(x,y,z\\), got 4" -grid_n 8,8,8,8)
+vp_bad_input(integer_garbage 1 "option -time_max_steps: '1e3x' is not an integer" -time_max_steps 1e3x)
+vp_bad_input(integer_fraction 1 "option -output_every: '2.5' is not an integer" -output_every 2.5)
+vp_bad_input(fractional_cells 1 "option -grid_n: needs whole numbers of cells, got 8.5" -grid_n 8.5,8,8)
+vp_bad_input(real_garbage 1 "option -fluid_mu: 'abc' is not a number" -fluid_mu abc)
+vp_bad_input(missing_value 1 "option -time_dt: needs a number" -time_dt)
+vp_bad_input(nan_gravity 1 "option -gravity: 'nan' is not a finite number" -gravity 0,0,nan)
+vp_bad_input(infinite_box 1 "option -grid_hi: 'inf' is not a finite number" -grid_hi inf,1,1)
+vp_bad_input(bad_boolean 1 "option -fluid_off: 'maybe' is not a boolean" -fluid_off maybe)
+vp_bad_input(grid_index_overflow 1 "option -grid_n: 2000,2000,2000 needs .* face unknowns, more than this PETSc build indexes"
+             -grid_n 2000,2000,2000)
+vp_bad_input(memory 1 "option -grid_n: the run needs about .* GB per node .* available" -grid_n 800,800,800)
+vp_bad_input(health_cfl_max 1 "option -health_cfl_max: must be > 0, got 0" -health_cfl_max 0)
+vp_bad_input(health_overlap_max 1 "option -health_overlap_max: must be in \\(0, 1\\], got 2" -health_overlap_max 2)
+vp_bad_input(wall_limit 1 "option -time_wall_limit: must be >= 0 \\(0: none\\), got -1" -time_wall_limit -1)
+vp_bad_input(restart_missing 1 "option -restart: cannot read 'no/such/checkpoint.h5'" -restart no/such/checkpoint.h5)
+vp_bad_input(dem_only_without_particles 1 "option -fluid_off: a DEM-only run needs particles" -fluid_off)
+# Found while running: the run stops with the step, time and the option at fault, writes a snapshot
+# of that step and exits 3.
+vp_run_failure(fixed_dt_cfl 1 "stopped at step 1, t = 0.5 s: failed: CFL number .* exceeds -health_cfl_max 1 with the fixed step -time_dt 0.5"
+               -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 -time_dt 0.5)
+vp_run_failure(escaped_particle 1 "stopped at step 1, t = 0.001 s: failed: particle 0 left the box"
+               -grid_n 8,8,8 -fluid_off -particle_position 0.5,0.5,0.5 -particle_velocity 1e30,0,0 -particle_radius 0.05
+               -contact_tc 1e-3 -time_dt 1e-3 -time_max_steps 5)
+vp_run_failure(soft_contact 2 "contact between particle .* overlaps by .* % of the smaller diameter .*shorten -contact_tc"
+               -options_file ${VP_CASES}/granular_collapse_dry.opts -particles_file ${PROJECT_SOURCE_DIR}/cases/data/column_2000.csv
+               -time_dt 1e-3 -time_max_steps 20)
+# The lifecycle: help, used directories, changed set-up on restart, SIGTERM, wall-time limit.
+foreach(scenario help rerun output_dir_file restart_setup signal wall_limit)
+  add_test(NAME lifecycle_${scenario} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_lifecycle.sh ${scenario}
+           $<TARGET_FILE:vpsolve> ${CMAKE_CURRENT_BINARY_DIR}/lifecycle/${scenario})
+  set_tests_properties(lifecycle_${scenario} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+endforeach()

@@ -5,7 +5,7 @@
 
 namespace vp {
 
-enum class Stage { Advection, Diffusion, Pressure, Penalization, HydroForce, DEM, Exchange, IO, Count };
+enum class Stage { Advection, Diffusion, Pressure, Penalization, HydroForce, DEM, Exchange, IO, Health, Count };
 
 // The stage handle (registered on first use).
 PetscLogStage logStage(Stage s);

@@ -12,6 +12,7 @@
 #include "vp/particles/ParticleConfig.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include "vp/particles/Walls.hpp"
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -59,6 +60,8 @@ public:
   void syncGhosts() { exchange_->updateGhosts(store_); }
   const ContactLaw& law() const { return law_; }
   std::size_t rebuilds() const { return rebuilds_; }
+  // Kinetic energy of this rank's free particles after the last sub-step (0 before any).
+  double localKineticEnergy() const { return std::max(kineticEnergy_, 0.0); }
   // This rank's deepest contact since the last call (the health check reads it once per step).
   OverlapRecord takeLargestOverlap();
 

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The run lifecycle as a user meets it (docs/robustness.md); one scenario per call:
+#   check_lifecycle.sh <scenario> <vpsolve> <work dir>
+# help | rerun | output_dir_file | restart_setup | signal | wall_limit
+set -u
+scenario=$1 vp=$2 work=$3
+rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
+BOX="-grid_n 8,8,8 -monitor_every 0"
+run() { mpirun -n "${NP:-1}" --oversubscribe "$vp" "$@"; }
+fail() { echo "FAIL: $*"; exit 1; }
+lines() { wc -l < "$1"; }
+
+case $scenario in
+help)  # prints the options, exits 0, touches nothing
+  run $BOX -time_max_steps 3 -output_dir out >/dev/null 2>&1 || fail "first run"
+  before=$(md5sum out/* | md5sum)
+  for h in -help -h --help; do
+    run $h -output_dir out -grid_n 4,4,4 >help.log 2>&1 || fail "$h exited non-zero"
+    grep -q -- "-grid_n <32,32,32> (given: 4,4,4)" help.log || fail "$h does not list -grid_n with its default and given value"
+    grep -q -- "-bc_xlo <wall>.*(wall, slip, periodic, velocity)" help.log || fail "$h does not list the choices"
+    [ "$(md5sum out/* | md5sum)" = "$before" ] || fail "$h changed the output directory"
+  done ;;
+rerun)  # a used directory is refused and kept; -output_overwrite replaces it
+  run $BOX -time_max_steps 3 -output_dir out >/dev/null 2>&1 || fail "first run"
+  before=$(md5sum out/* | md5sum)
+  run $BOX -time_max_steps 5 -output_dir out >rerun.log 2>&1 && fail "a rerun into a used directory ran"
+  grep -q "option -output_dir: 'out' holds another run" rerun.log || fail "no message naming -output_dir"
+  [ "$(md5sum out/* | md5sum)" = "$before" ] || fail "the refused rerun changed the earlier outputs"
+  run $BOX -time_max_steps 5 -output_dir out -output_overwrite >/dev/null 2>&1 || fail "-output_overwrite did not run"
+  [ "$(lines out/diagnostics.csv)" = 6 ] || fail "-output_overwrite: diagnostics.csv has $(lines out/diagnostics.csv) lines, not 6"
+  [ -e out/fields_000003.h5 ] && fail "-output_overwrite left the old run's fields_000003.h5"
+  true ;;
+output_dir_file)
+  echo keep > afile
+  run $BOX -output_dir afile >err.log 2>&1 && fail "ran into a file"
+  grep -q "option -output_dir: 'afile' exists and is not a directory" err.log || fail "no message"
+  [ "$(cat afile)" = keep ] || fail "the file was changed" ;;
+restart_setup)  # a restart with other physics is refused, or warned with -restart_allow_changes
+  run $BOX -time_max_steps 4 -checkpoint_every 2 -output_dir out >/dev/null 2>&1 || fail "first run"
+  run $BOX -time_max_steps 6 -restart out/checkpoint_000002.h5 -output_dir out -fluid_mu 2e-3 >err.log 2>&1 && fail "restart with another -fluid_mu ran"
+  grep -q "option -restart: the checkpoint was written with other set-up options: -fluid_mu 0.001 (now 2e-3)" err.log || fail "no message naming -fluid_mu: $(cat err.log)"
+  run $BOX -time_max_steps 6 -restart out/checkpoint_000002.h5 -output_dir out -fluid_mu 2e-3 -restart_allow_changes >ok.log 2>&1 || fail "-restart_allow_changes did not run"
+  grep -q "warning: continuing with changed set-up options" ok.log || fail "no warning" ;;
+signal)  # SIGTERM: a checkpoint at the next step boundary, exit 128 + 15, and the run continues from it.
+  # Sent to vpsolve itself (a singleton MPI run): mpirun, when signalled, forwards the signal but
+  # reports its own status and may drop the last lines of output.
+  "$vp" -grid_n 16,16,16 -time_max_steps 100000 -time_final 1e9 -output_dir out >term.log 2>&1 &
+  pid=$!
+  for _ in $(seq 200); do [ -s out/diagnostics.csv ] && [ "$(lines out/diagnostics.csv)" -gt 20 ] && break; sleep 0.1; done
+  kill -TERM $pid
+  wait $pid; echo $? > status
+  [ "$(cat status)" = 143 ] || fail "exit status $(cat status), not 143"
+  grep -q "stopped at step .*: signal SIGTERM" term.log || fail "no stop reason"
+  ls out | grep -q "checkpoint_0.*h5" || fail "no checkpoint"
+  grep -q '"stop_reason": "signal SIGTERM"' out/run.json || fail "run.json lacks the stop reason"
+  run -grid_n 16,16,16 -time_max_steps 100000 -time_final 1e9 -restart out/checkpoint_latest.h5 -output_dir out -time_wall_limit 1 >cont.log 2>&1 || fail "the run did not continue from the checkpoint" ;;
+wall_limit)  # -time_wall_limit: a checkpoint and exit 0
+  run -grid_n 16,16,16 -time_max_steps 100000 -time_final 1e9 -time_wall_limit 2 -output_dir out >wl.log 2>&1 || fail "exit status $?"
+  grep -q "reached -time_wall_limit" wl.log || fail "no stop reason"
+  ls out | grep -q "checkpoint_0.*h5" || fail "no checkpoint"
+  ls out | grep -q "fields_0.*h5" || fail "no final snapshot" ;;
+*) fail "unknown scenario $scenario" ;;
+esac
+echo "ok: $scenario"
