@@ -32,10 +32,6 @@ struct Run {
   int outputEvery = 10;
 };
 
-std::string str(double v) { return formatNumber(v); }
-
-[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
-
 Run readOptions()
 {
   Run r;
@@ -69,7 +65,7 @@ void validate(Run& r)
 {
   HaradaParams& m = r.model;
   auto positive = [](const char* option, double v) {
-    if (!(v > 0) || !std::isfinite(v)) fail(option, "must be > 0, got " + str(v));
+    if (!(v > 0) || !std::isfinite(v)) failOption(option, "must be > 0, got " + formatNumber(v));
   };
   positive("-fluid_rho", m.fluidDensity);
   positive("-fluid_mu", m.viscosity);
@@ -78,17 +74,17 @@ void validate(Run& r)
   positive("-contact_tc", m.contactTime);
   positive("-time_dt", m.dt);
   positive("-time_final", r.timeFinal);
-  if (!(m.restitution > 0 && m.restitution <= 1)) fail("-contact_restitution", "must be in (0, 1], got " + str(m.restitution));
-  if (!(m.roughness > 0 && m.roughness < 0.5)) fail("-contact_roughness", "must be in (0, 0.5) (fraction of the diameter), got " + str(m.roughness));
-  if (r.velocity[0] != 0 || r.velocity[2] != 0) fail("-particle_velocity", "the model moves normal to the wall only: x and z must be 0");
-  if (r.gravity[0] != 0 || r.gravity[2] != 0) fail("-gravity", "the model moves normal to the wall only: x and z must be 0");
+  if (!(m.restitution > 0 && m.restitution <= 1)) failOption("-contact_restitution", "must be in (0, 1], got " + formatNumber(m.restitution));
+  if (!(m.roughness > 0 && m.roughness < 0.5)) failOption("-contact_roughness", "must be in (0, 0.5) (fraction of the diameter), got " + formatNumber(m.roughness));
+  if (r.velocity[0] != 0 || r.velocity[2] != 0) failOption("-particle_velocity", "the model moves normal to the wall only: x and z must be 0");
+  if (r.gravity[0] != 0 || r.gravity[2] != 0) failOption("-gravity", "the model moves normal to the wall only: x and z must be 0");
   m.gravity = r.gravity[1];
   const double hCol = 2 * m.radius * m.roughness;
   if (!(r.position[1] - m.radius > hCol))
-    fail("-particle_position", "y must exceed radius + roughness gap = " + str(m.radius + hCol) + ", got " + str(r.position[1]));
+    failOption("-particle_position", "y must exceed radius + roughness gap = " + formatNumber(m.radius + hCol) + ", got " + formatNumber(r.position[1]));
   if (m.contact && m.dt > m.contactTime / 30)
-    fail("-time_dt", "must be <= -contact_tc / 30 = " + str(m.contactTime / 30) + " to resolve the contact, got " + str(m.dt));
-  if (r.outputEvery < 1) fail("-output_every", "must be >= 1, got " + std::to_string(r.outputEvery));
+    failOption("-time_dt", "must be <= -contact_tc / 30 = " + formatNumber(m.contactTime / 30) + " to resolve the contact, got " + formatNumber(m.dt));
+  if (r.outputEvery < 1) failOption("-output_every", "must be >= 1, got " + std::to_string(r.outputEvery));
 }
 
 void writeRow(std::ofstream& out, const HaradaModel& h, const Run& r)

@@ -19,7 +19,8 @@ const char* const kUsage =
   "vpsolve: incompressible Navier-Stokes on a staggered grid with resolved particles.\n"
   "usage: mpirun -n 2 vpsolve -options_file cases/dam_break.opts [options]\n"
   "Options below as -name <default>; vectors are comma-separated. Exit status: 0 done (or stopped by\n"
-  "-time_wall_limit), 1 bad input, 2 internal error, 3 failed health check, 128+n stopped by signal n.\n";
+  "-time_wall_limit), 1 bad input, 2 internal error, 3 failed health check, solver or full disk,\n"
+  "128+n stopped by signal n.\n";
 
 const char* const kSolverNote =
   "\nPETSc options of the solver objects take the prefixes -pressure_ and -velocity_ (for example\n"

@@ -152,6 +152,8 @@ void Simulation::checkpoint()
   StageScope stage(Stage::IO);
   if (tracker_) tracker_->flush();  // the time series hold every row up to the checkpoint
   checkpointSchedule_.done(step_, time_);
+  const double particles = dem_ ? 60.0 * 8 * dem_->diagnostics().particles : 0;
+  requireSpace(grid_.comm(), cfg_.output.dir, 11.0 * 8 * grid_.cells() + particles, "the checkpoint of step " + std::to_string(step_));
   RunState r;
   r.step = step_;
   r.time = time_;
@@ -339,6 +341,9 @@ void Simulation::output()
 {
   if (!fields_) return;
   StageScope stage(Stage::IO);
+  const double particles = dem_ ? 20.0 * 8 * dem_->diagnostics().particles : 0;
+  requireSpace(grid_.comm(), cfg_.output.dir, (cfg_.fluid.off ? 0 : 5.0 * 8 * grid_.cells()) + particles,
+               "the snapshot of step " + std::to_string(step_));
   if (!cfg_.fluid.off)
     fields_->write(step_, time_, fluid_->velocityLocal(), fluid_->pressure(), penalization_ ? penalization_->chi() : nullptr);
   if (particleWriter_) particleWriter_->write(dem_->particles(), step_, time_);
@@ -419,7 +424,11 @@ void Simulation::finish(const std::string& stopReason)
                     ",\n  \"stage_seconds\": {" + stages + "}";
   if (!cfg_.fluid.off) end += ",\n  \"kinetic_energy\": " + formatNumber(cfg_.fluid.rho * fluid_->stats().kineticEnergy);
   if (dem_) end += ",\n  \"particles_at_start\": " + std::to_string(particlesAtStart_) + ",\n  \"particles\": " + std::to_string(particles);
-  writeRunRecord(comm, cfg_.output.dir, end);
+  try {
+    writeRunRecord(comm, cfg_.output.dir, end);
+  } catch (const std::runtime_error& e) {  // a full disk: the start record stays
+    PetscPrintf(comm, "vpsolve: warning: %s\n", e.what());
+  }
 }
 
 } // namespace vp

@@ -13,10 +13,6 @@ const char* const kFaceNames[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
 const char* const kBcNames[4] = {"wall", "slip", "periodic", "velocity"};
 const char* const kInitNames[4] = {"rest", "taylor_green", "abc", "poiseuille"};
 
-[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
-
-std::string str(double v) { return formatNumber(v); }
-
 std::vector<std::string> names(const char* const* v, int n) { return {v, v + n}; }
 
 } // namespace
@@ -30,7 +26,7 @@ Config Config::read()
     OptionGroup o("Grid: uniform 3-D box");
     const Vec3 n = o.vec3("-grid_n", {32, 32, 32}, "Cells per axis nx,ny,nz");
     for (int d = 0; d < 3; ++d) {
-      if (n[d] != std::floor(n[d]) || std::fabs(n[d]) > 1e9) fail("-grid_n", "needs whole numbers of cells, got " + str(n[d]));
+      if (n[d] != std::floor(n[d]) || std::fabs(n[d]) > 1e9) failOption("-grid_n", "needs whole numbers of cells, got " + formatNumber(n[d]));
       c.grid.n[d] = static_cast<int>(n[d]);
     }
     const Vec3 lo = o.vec3("-grid_lo", {0, 0, 0}, "Lower corner x,y,z of the domain (m)");
@@ -99,53 +95,53 @@ void Config::validate() const
 {
   const char* axis = "xyz";
   for (int d = 0; d < 3; ++d) {
-    if (grid.n[d] < 1) fail("-grid_n", std::string("cells along ") + axis[d] + " must be >= 1, got " + std::to_string(grid.n[d]));
+    if (grid.n[d] < 1) failOption("-grid_n", std::string("cells along ") + axis[d] + " must be >= 1, got " + std::to_string(grid.n[d]));
     if (!(grid.hi[d] > grid.lo[d]))
-      fail("-grid_hi", std::string("upper corner must exceed -grid_lo along ") + axis[d] + " (" + str(grid.hi[d]) + " <= " + str(grid.lo[d]) + ")");
+      failOption("-grid_hi", std::string("upper corner must exceed -grid_lo along ") + axis[d] + " (" + formatNumber(grid.hi[d]) + " <= " + formatNumber(grid.lo[d]) + ")");
     if (!bc.periodic(d) && grid.n[d] < 2)
-      fail("-grid_n", std::string("a wall-bounded axis needs >= 2 cells, ") + axis[d] + " has " + std::to_string(grid.n[d]));
+      failOption("-grid_n", std::string("a wall-bounded axis needs >= 2 cells, ") + axis[d] + " has " + std::to_string(grid.n[d]));
     bool plo = bc.type[2 * d] == BcType::Periodic, phi = bc.type[2 * d + 1] == BcType::Periodic;
     if (plo != phi)
-      fail(std::string("-bc_") + kFaceNames[2 * d + (plo ? 1 : 0)],
+      failOption(std::string("-bc_") + kFaceNames[2 * d + (plo ? 1 : 0)],
            std::string("periodic must be set on both ") + axis[d] + " faces (-bc_" + kFaceNames[2 * d] + " and -bc_" + kFaceNames[2 * d + 1] + ")");
   }
   // Face vectors have 3 (n+1)^3 entries: they must fit PETSc's index type.
   const double faces = 3.0 * (grid.n[0] + 1.0) * (grid.n[1] + 1.0) * (grid.n[2] + 1.0);
   if (faces > double(PETSC_MAX_INT))
-    fail("-grid_n", std::to_string(grid.n[0]) + "," + std::to_string(grid.n[1]) + "," + std::to_string(grid.n[2]) +
-                        " needs " + str(faces) + " face unknowns, more than this PETSc build indexes (" +
+    failOption("-grid_n", std::to_string(grid.n[0]) + "," + std::to_string(grid.n[1]) + "," + std::to_string(grid.n[2]) +
+                        " needs " + formatNumber(faces) + " face unknowns, more than this PETSc build indexes (" +
                         std::to_string(PETSC_MAX_INT) + "; a 64-bit-index PETSc would be needed)");
   for (int f = 0; f < 6; ++f) {
     const Vec3& v = bc.velocity[f];
     if (bc.type[f] != BcType::Velocity && (v.x != 0 || v.y != 0 || v.z != 0))
-      fail(std::string("-bc_") + kFaceNames[f] + "_velocity", std::string("only allowed when -bc_") + kFaceNames[f] + " velocity");
+      failOption(std::string("-bc_") + kFaceNames[f] + "_velocity", std::string("only allowed when -bc_") + kFaceNames[f] + " velocity");
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      fail(std::string("-bc_") + kFaceNames[f] + "_velocity", "must be finite");
+      failOption(std::string("-bc_") + kFaceNames[f] + "_velocity", "must be finite");
   }
-  if (!(fluid.rho > 0) || !std::isfinite(fluid.rho)) fail("-fluid_rho", "must be > 0, got " + str(fluid.rho));
-  if (!(fluid.mu > 0) || !std::isfinite(fluid.mu)) fail("-fluid_mu", "must be > 0, got " + str(fluid.mu));
-  if (!(time.final > 0)) fail("-time_final", "must be > 0, got " + str(time.final));
-  if (time.maxSteps < 0) fail("-time_max_steps", "must be >= 0, got " + std::to_string(time.maxSteps));
-  if (!(time.cfl > 0 && time.cfl <= 1)) fail("-time_cfl", "must be in (0, 1], got " + str(time.cfl));
-  if (!(time.dtMax >= 0)) fail("-time_dt_max", "must be >= 0, got " + str(time.dtMax));
-  if (!(time.dt >= 0)) fail("-time_dt", "must be >= 0, got " + str(time.dt));
-  if (output.every < 0) fail("-output_every", "must be >= 0 (0: no snapshots), got " + std::to_string(output.every));
-  if (!(output.dt >= 0)) fail("-output_dt", "must be >= 0 (0: no snapshots), got " + str(output.dt));
-  if (output.monitorEvery < 0) fail("-monitor_every", "must be >= 0, got " + std::to_string(output.monitorEvery));
-  if (output.dir.empty()) fail("-output_dir", "must not be empty");
-  if (checkpoint.every < 0) fail("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
-  if (!(checkpoint.dt >= 0)) fail("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + str(checkpoint.dt));
-  if (!(time.wallLimit >= 0)) fail("-time_wall_limit", "must be >= 0 (0: none), got " + str(time.wallLimit));
-  if (!(health.cflMax > 0)) fail("-health_cfl_max", "must be > 0, got " + str(health.cflMax));
-  if (!(health.overlapMax > 0 && health.overlapMax <= 1)) fail("-health_overlap_max", "must be in (0, 1], got " + str(health.overlapMax));
-  if (checkpoint.keep < 1) fail("-checkpoint_keep", "must be >= 1, got " + std::to_string(checkpoint.keep));
+  if (!(fluid.rho > 0) || !std::isfinite(fluid.rho)) failOption("-fluid_rho", "must be > 0, got " + formatNumber(fluid.rho));
+  if (!(fluid.mu > 0) || !std::isfinite(fluid.mu)) failOption("-fluid_mu", "must be > 0, got " + formatNumber(fluid.mu));
+  if (!(time.final > 0)) failOption("-time_final", "must be > 0, got " + formatNumber(time.final));
+  if (time.maxSteps < 0) failOption("-time_max_steps", "must be >= 0, got " + std::to_string(time.maxSteps));
+  if (!(time.cfl > 0 && time.cfl <= 1)) failOption("-time_cfl", "must be in (0, 1], got " + formatNumber(time.cfl));
+  if (!(time.dtMax >= 0)) failOption("-time_dt_max", "must be >= 0, got " + formatNumber(time.dtMax));
+  if (!(time.dt >= 0)) failOption("-time_dt", "must be >= 0, got " + formatNumber(time.dt));
+  if (output.every < 0) failOption("-output_every", "must be >= 0 (0: no snapshots), got " + std::to_string(output.every));
+  if (!(output.dt >= 0)) failOption("-output_dt", "must be >= 0 (0: no snapshots), got " + formatNumber(output.dt));
+  if (output.monitorEvery < 0) failOption("-monitor_every", "must be >= 0, got " + std::to_string(output.monitorEvery));
+  if (output.dir.empty()) failOption("-output_dir", "must not be empty");
+  if (checkpoint.every < 0) failOption("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
+  if (!(checkpoint.dt >= 0)) failOption("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + formatNumber(checkpoint.dt));
+  if (!(time.wallLimit >= 0)) failOption("-time_wall_limit", "must be >= 0 (0: none), got " + formatNumber(time.wallLimit));
+  if (!(health.cflMax > 0)) failOption("-health_cfl_max", "must be > 0, got " + formatNumber(health.cflMax));
+  if (!(health.overlapMax > 0 && health.overlapMax <= 1)) failOption("-health_overlap_max", "must be in (0, 1], got " + formatNumber(health.overlapMax));
+  if (checkpoint.keep < 1) failOption("-checkpoint_keep", "must be >= 1, got " + std::to_string(checkpoint.keep));
   if (fluid.init == InitFlow::TaylorGreen || fluid.init == InitFlow::Abc) {
     bool needZ = fluid.init == InitFlow::Abc;
     if (!bc.periodic(0) || !bc.periodic(1) || (needZ && !bc.periodic(2)))
-      fail("-init_flow", std::string(fluid.init == InitFlow::Abc ? "abc needs periodic x, y and z" : "taylor_green needs periodic x and y"));
+      failOption("-init_flow", std::string(fluid.init == InitFlow::Abc ? "abc needs periodic x, y and z" : "taylor_green needs periodic x and y"));
   }
   if (fluid.init == InitFlow::Poiseuille && (bc.periodic(1) || !bc.periodic(0)))
-    fail("-init_flow", "poiseuille needs periodic x and walls in y");
+    failOption("-init_flow", "poiseuille needs periodic x and walls in y");
 }
 
 } // namespace vp

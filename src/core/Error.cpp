@@ -14,6 +14,11 @@ void failOption(const std::string& option, const std::string& what)
   throw InputError("option " + option + ": " + what);
 }
 
+void failOption(const std::string& option, const std::string& what, double value)
+{
+  failOption(option, what + ", got " + formatNumber(value));
+}
+
 std::string formatNumber(double v)
 {
   std::ostringstream s;

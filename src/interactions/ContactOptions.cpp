@@ -39,22 +39,19 @@ ContactConfig readContactOptions()
 
 void ContactConfig::validate() const
 {
-  auto fail = [](const char* option, const std::string& what, double got) {
-    failOption(option, what + ", got " + formatNumber(got));
-  };
-  if (!(restitution > 0 && restitution <= 1)) fail("-contact_restitution", "must be in (0, 1]", restitution);
-  if (!(restitutionT >= 0 && restitutionT <= 1)) fail("-contact_restitution_t", "must be in (0, 1] (0: not set)", restitutionT);
-  if (!(friction >= 0) || !std::isfinite(friction)) fail("-contact_friction", "must be >= 0", friction);
-  if (!(tc >= 0) || !std::isfinite(tc)) fail("-contact_tc", "must be > 0 (s)", tc);
-  if (!(tcSteps >= 0) || !std::isfinite(tcSteps)) fail("-contact_tc_steps", "must be > 0", tcSteps);
-  if (!(kn >= 0) || !std::isfinite(kn)) fail("-contact_kn", "must be > 0 (N/m)", kn);
-  if (!(knWall >= 0) || !std::isfinite(knWall)) fail("-contact_kn_wall", "must be > 0 (N/m)", knWall);
+  if (!(restitution > 0 && restitution <= 1)) failOption("-contact_restitution", "must be in (0, 1]", restitution);
+  if (!(restitutionT >= 0 && restitutionT <= 1)) failOption("-contact_restitution_t", "must be in (0, 1] (0: not set)", restitutionT);
+  if (!(friction >= 0) || !std::isfinite(friction)) failOption("-contact_friction", "must be >= 0", friction);
+  if (!(tc >= 0) || !std::isfinite(tc)) failOption("-contact_tc", "must be > 0 (s)", tc);
+  if (!(tcSteps >= 0) || !std::isfinite(tcSteps)) failOption("-contact_tc_steps", "must be > 0", tcSteps);
+  if (!(kn >= 0) || !std::isfinite(kn)) failOption("-contact_kn", "must be > 0 (N/m)", kn);
+  if (!(knWall >= 0) || !std::isfinite(knWall)) failOption("-contact_kn_wall", "must be > 0 (N/m)", knWall);
   const int laws = (tc > 0) + (tcSteps > 0) + (kn > 0);
   if (laws > 1) failOption("-contact_tc", "give only one of -contact_tc, -contact_tc_steps, -contact_kn");
   if (knWall > 0 && !(kn > 0)) failOption("-contact_kn_wall", "needs -contact_kn");
-  if (!(ktRatio >= 0 && ktRatio <= 1)) fail("-contact_kt_ratio", "must be in [0, 1]", ktRatio);
-  if (!(gtRatio >= 0 && gtRatio <= 1)) fail("-contact_damping_t_ratio", "must be in [0, 1]", gtRatio);
-  if (!(roughness >= 0 && roughness < 0.5)) fail("-contact_roughness", "must be in [0, 0.5)", roughness);
+  if (!(ktRatio >= 0 && ktRatio <= 1)) failOption("-contact_kt_ratio", "must be in [0, 1]", ktRatio);
+  if (!(gtRatio >= 0 && gtRatio <= 1)) failOption("-contact_damping_t_ratio", "must be in [0, 1]", gtRatio);
+  if (!(roughness >= 0 && roughness < 0.5)) failOption("-contact_roughness", "must be in [0, 0.5)", roughness);
 }
 
 } // namespace vp

@@ -7,17 +7,6 @@
 
 namespace vp {
 
-namespace {
-
-[[noreturn]] void fail(const char* option, const std::string& what, double got)
-{
-  std::ostringstream msg;
-  msg << "option " << option << ": " << what << ", got " << got;
-  throw InputError(msg.str());
-}
-
-} // namespace
-
 LubricationParams readLubricationOptions()
 {
   LubricationParams p;
@@ -33,20 +22,20 @@ LubricationParams readLubricationOptions()
                         "LLCM lubrication-region radius r0 in units of the reduced radius (<= 1 keeps the parabolic gap valid)");
 
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
-    fail("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
+    failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
   if (!(p.activationCells >= 0 && std::isfinite(p.activationCells)))
-    fail("-lub_activation_cells", "must be >= 0 (0: 0.2 cells in coupled runs)", p.activationCells);
+    failOption("-lub_activation_cells", "must be >= 0 (0: 0.2 cells in coupled runs)", p.activationCells);
   if (p.activation > 0 && p.activationCells > 0)
-    fail("-lub_activation_cells", "give either -lub_activation or -lub_activation_cells", p.activationCells);
+    failOption("-lub_activation_cells", "give either -lub_activation or -lub_activation_cells", p.activationCells);
   if (!(p.saturation >= 0 && std::isfinite(p.saturation)))
-    fail("-lub_saturation", "must be >= 0 (0: the contact roughness)", p.saturation);
+    failOption("-lub_saturation", "must be >= 0 (0: the contact roughness)", p.saturation);
   if (p.activation > 0 && p.saturation >= p.activation) {
     std::ostringstream what;
     what << "must be below -lub_activation (" << p.activation << ")";
-    fail("-lub_saturation", what.str(), p.saturation);
+    failOption("-lub_saturation", what.str(), p.saturation);
   }
   if (!(p.llcmRegion > 0 && std::isfinite(p.llcmRegion)))
-    fail("-lub_llcm_r0", "must be > 0", p.llcmRegion);
+    failOption("-lub_llcm_r0", "must be > 0", p.llcmRegion);
   return p;
 }
 

@@ -110,10 +110,9 @@ void broadcast(MPI_Comm comm, std::vector<double>& v)
 
 CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : comm_(comm), dir_(std::move(dir)), keep_(keep) {}
 
-void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const RunState& run, const FluidState& fluid,
-                             const std::vector<ParticleRecord>& owned)
+void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const BoundaryConfig& bc, const RunState& run,
+                                 const FluidState& fluid, const std::vector<ParticleRecord>& owned)
 {
-  const std::string name = h5::stepFile("checkpoint", run.step), path = dir_ + "/" + name, tmp = path + ".tmp";
   PetscViewer viewer;
   VP_CALL(PetscViewerHDF5Open(comm_, tmp.c_str(), FILE_MODE_WRITE, &viewer));
   for (auto [n, v] : named(fluid)) {
@@ -162,7 +161,22 @@ void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const R
   h5::writeAttribute(file, "setup_options", setupOptionsText());
   h5::writeAttribute(file, "vpsolve_run", runRecord());
   VP_CALL(PetscViewerDestroy(&viewer));
+}
 
+void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const RunState& run, const FluidState& fluid,
+                             const std::vector<ParticleRecord>& owned)
+{
+  const std::string name = h5::stepFile("checkpoint", run.step), path = dir_ + "/" + name, tmp = path + ".tmp";
+  int rank;
+  MPI_Comm_rank(comm_, &rank);
+  try {
+    QuietPetscErrors quiet;
+    writeFile(tmp, grid, bc, run, fluid, owned);
+  } catch (const std::exception& e) {
+    // The earlier checkpoints stay; only the unfinished file goes.
+    if (rank == 0) std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + tmp + " (" + e.what() + "; disk full?); earlier checkpoints are kept");
+  }
   MPI_Barrier(comm_);
   if (rank == 0) {
     if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("cannot rename " + tmp + " to " + path);

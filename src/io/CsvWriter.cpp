@@ -1,5 +1,7 @@
 #include "vp/io/CsvWriter.hpp"
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -29,7 +31,7 @@ bool keepRowsUpTo(const std::string& path, double last)
 }
 
 CsvWriter::CsvWriter(MPI_Comm comm, const std::string& path, const std::vector<std::string>& columns, double resumeAfter)
-  : columns_(columns.size())
+  : path_(path), columns_(columns.size())
 {
   int rank;
   MPI_Comm_rank(comm, &rank);
@@ -56,7 +58,8 @@ void CsvWriter::row(const std::vector<double>& values)
   if (values.size() != columns_) throw std::logic_error("CsvWriter: row width differs from the header");
   for (size_t i = 0; i < values.size(); ++i) std::fprintf(file_, "%s%.10g", i ? "," : "", values[i]);
   std::fprintf(file_, "\n");
-  std::fflush(file_);
+  if (std::fflush(file_) != 0 || std::ferror(file_))
+    throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno));
 }
 
 } // namespace vp

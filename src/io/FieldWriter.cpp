@@ -54,13 +54,17 @@ void FieldWriter::write(int step, double time, Vec velocityLocal, Vec pressure, 
     VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), velocityLocal, &u));
   }
   const std::string path = dir_ + "/" + h5::stepFile("fields", step);
-  PetscViewer viewer;
-  VP_CALL(PetscViewerHDF5Open(grid_.comm(), path.c_str(), FILE_MODE_WRITE, &viewer));
-  VP_CALL(VecView(centre_, viewer));
   VP_CALL(PetscObjectSetName((PetscObject)pressure, "pressure"));
-  VP_CALL(VecView(pressure, viewer));
-  if (chi) VP_CALL(VecView(chiCell_, viewer));
-  VP_CALL(PetscViewerDestroy(&viewer));
+  {
+    QuietPetscErrors quiet;
+    PetscViewer viewer = nullptr;
+    PetscErrorCode e = PetscViewerHDF5Open(grid_.comm(), path.c_str(), FILE_MODE_WRITE, &viewer);
+    if (!e) e = VecView(centre_, viewer);
+    if (!e) e = VecView(pressure, viewer);
+    if (!e && chi) e = VecView(chiCell_, viewer);
+    PetscViewerDestroy(&viewer);
+    if (e) throw std::runtime_error("cannot write " + path + " (HDF5 error " + std::to_string(e) + "; disk full?)");
+  }
 
   int rank;
   MPI_Comm_rank(grid_.comm(), &rank);
@@ -132,6 +136,12 @@ void FieldWriter::writeXdmf(bool chi) const
       x << "</Grid>\n";
     }
     x << "</Grid>\n</Domain>\n</Xdmf>\n";
+    x.close();
+    // A failed write (a full disk) keeps the previous index.
+    if (!x) {
+      std::filesystem::remove(tmp);
+      throw std::runtime_error("cannot write " + tmp + " (disk full?); fields.xmf is kept as it was");
+    }
   }
   std::filesystem::rename(tmp, dir_ + "/fields.xmf");
 }

@@ -1,7 +1,10 @@
 #include "vp/io/OutputDir.hpp"
 #include "vp/core/Error.hpp"
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <regex>
+#include <sys/statvfs.h>
 
 namespace fs = std::filesystem;
 
@@ -66,6 +69,23 @@ void prepareOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool 
     if (!fs::is_directory(dir, ec)) error = "option -output_dir: cannot create directory '" + dir + "'";
   }
   agree(comm, error);
+}
+
+void requireSpace(MPI_Comm comm, const std::string& dir, double bytes, const std::string& what)
+{
+  int rank;
+  MPI_Comm_rank(comm, &rank);
+  double free = HUGE_VAL;
+  struct statvfs fs;
+  if (rank == 0 && statvfs(dir.c_str(), &fs) == 0) free = double(fs.f_bavail) * double(fs.f_frsize);
+  MPI_Bcast(&free, 1, MPI_DOUBLE, 0, comm);
+  const double need = 1.1 * bytes + 1e6;  // HDF5 metadata and the index files
+  if (free >= need) return;
+  char msg[512];
+  std::snprintf(msg, sizeof msg, "the file system of -output_dir '%s' has %.1f MB free, %s needs about %.1f MB: the run stops "
+                "with the earlier outputs and checkpoints intact; free space, then continue with -restart %s/checkpoint_latest.h5",
+                dir.c_str(), free / 1e6, what.c_str(), need / 1e6, dir.c_str());
+  throw RunFailure(msg);
 }
 
 } // namespace vp

@@ -114,6 +114,12 @@ void ParticleWriter::writeXdmf() const
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    x.close();
+    // A failed write (a full disk) keeps the previous index.
+    if (!x) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot write " + tmp + " (disk full?); particles.xmf is kept as it was");
+    }
   }
   std::rename(tmp.c_str(), (dir_ + "/particles.xmf").c_str());
 }

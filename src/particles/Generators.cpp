@@ -16,11 +16,6 @@ const char* const kParticleColumns[12] = {"id", "x", "y", "z", "radius", "densit
 
 namespace {
 
-[[noreturn]] void fail(const std::string& option, const std::string& what)
-{
-  throw InputError("option " + option + ": " + what);
-}
-
 // Fills a record from the 12 column values (order of kParticleColumns).
 ParticleRecord fromColumns(const double* v)
 {
@@ -38,29 +33,22 @@ void checkValues(const double* v, const std::string& where)
 {
   for (int c = 0; c < 12; ++c)
     if (!std::isfinite(v[c]))
-      fail("-particles_file", where + ": column " + kParticleColumns[c] + " is not a finite number");
+      failOption("-particles_file", where + ": column " + kParticleColumns[c] + " is not a finite number");
   if (v[0] < 0 || v[0] != std::floor(v[0]) || v[0] > 9.0e15)
-    fail("-particles_file", where + ": id must be an integer >= 0");
+    failOption("-particles_file", where + ": id must be an integer >= 0");
 }
 
 // Uniform double in [0, 1) from 53 random bits (same sequence on every platform).
 double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-std::string str(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 } // namespace
 
 std::vector<ParticleRecord> readParticleCsv(const std::string& path)
 {
   std::ifstream in(path);
-  if (!in) fail("-particles_file", "cannot open '" + path + "'");
+  if (!in) failOption("-particles_file", "cannot open '" + path + "'");
   std::string line;
-  if (!std::getline(in, line)) fail("-particles_file", "'" + path + "' is empty (needs a header line)");
+  if (!std::getline(in, line)) failOption("-particles_file", "'" + path + "' is empty (needs a header line)");
   std::vector<std::string> header;
   {
     std::stringstream h(line);
@@ -78,7 +66,7 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
     if (column[c] < 0) missing += std::string(missing.empty() ? "" : ",") + kParticleColumns[c];
   }
   if (!missing.empty())
-    fail("-particles_file", "'" + path + "' header lacks column(s) " + missing + " (needs id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)");
+    failOption("-particles_file", "'" + path + "' header lacks column(s) " + missing + " (needs id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)");
   std::vector<ParticleRecord> out;
   std::vector<std::string> cells;
   long lineNo = 1;
@@ -91,7 +79,7 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
     while (std::getline(s, cell, ',')) cells.push_back(cell);
     const std::string where = "'" + path + "' line " + std::to_string(lineNo);
     if (cells.size() != header.size())
-      fail("-particles_file", where + " has " + std::to_string(cells.size()) + " values, the header has " + std::to_string(header.size()));
+      failOption("-particles_file", where + " has " + std::to_string(cells.size()) + " values, the header has " + std::to_string(header.size()));
     double v[12];
     for (int c = 0; c < 12; ++c) {
       const std::string& t = cells[column[c]];
@@ -99,7 +87,7 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
       v[c] = std::strtod(t.c_str(), &end);
       while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
       if (end == t.c_str() || (end && *end != 0))
-        fail("-particles_file", where + ": column " + kParticleColumns[c] + " value '" + t + "' is not a number");
+        failOption("-particles_file", where + ": column " + kParticleColumns[c] + " value '" + t + "' is not a number");
     }
     checkValues(v, where);
     out.push_back(fromColumns(v));
@@ -125,7 +113,7 @@ std::vector<ParticleRecord> readParticleHdf5(const std::string& path)
       error = "'" + path + "' dataset " + kParticleColumns[c] + " must be 1-D with one value per particle";
   }
   if (file >= 0) H5Fclose(file);
-  if (!error.empty()) fail("-particles_file", error);
+  if (!error.empty()) failOption("-particles_file", error);
   std::vector<ParticleRecord> out;
   for (std::size_t i = 0; i < col[0].size(); ++i) {
     double v[12];
@@ -198,7 +186,7 @@ std::vector<ParticleRecord> randomParticles(const RandomInput& in, double densit
     out.push_back(r);
   }
   if (out.size() < target)
-    fail("-particles_random", "reached only " + std::to_string(out.size()) + " of " + std::to_string(target) +
+    failOption("-particles_random", "reached only " + std::to_string(out.size()) + " of " + std::to_string(target) +
                                   " particles; lower the volume fraction");
   return out;
 }
@@ -209,16 +197,16 @@ void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, do
   const char* axis = "xyz";
   for (const ParticleRecord& r : p) {
     const std::string who = "particle " + std::to_string(r.id);
-    if (!ids.insert(r.id).second) fail(option, "duplicate particle id " + std::to_string(r.id));
-    if (!(r.radius > 0)) fail(option, who + ": radius must be > 0, got " + str(r.radius));
-    if (!(r.density > 0)) fail(option, who + ": density must be > 0, got " + str(r.density));
+    if (!ids.insert(r.id).second) failOption(option, "duplicate particle id " + std::to_string(r.id));
+    if (!(r.radius > 0)) failOption(option, who + ": radius must be > 0, got " + formatNumber(r.radius));
+    if (!(r.density > 0)) failOption(option, who + ": density must be > 0, got " + formatNumber(r.density));
     for (int d = 0; d < 3; ++d) {
       const double lo = c.grid.lo[d], hi = c.grid.hi[d];
       // On a wall axis the sphere must fit (up to the overlap tolerance); on a periodic one the centre.
       const double margin = c.bc.periodic(d) ? 0 : r.radius * (1 - 2 * maxOverlap);
       if (!(r.x[d] >= lo + margin && r.x[d] <= hi - margin) || (c.bc.periodic(d) && r.x[d] == hi))
-        fail(option, who + " at " + axis[d] + " = " + str(r.x[d]) + " lies outside the domain [" + str(lo) + ", " +
-                         str(hi) + "] (sphere of radius " + str(r.radius) + ")");
+        failOption(option, who + " at " + axis[d] + " = " + formatNumber(r.x[d]) + " lies outside the domain [" + formatNumber(lo) + ", " +
+                         formatNumber(hi) + "] (sphere of radius " + formatNumber(r.radius) + ")");
     }
   }
   if (p.empty()) return;
@@ -234,8 +222,8 @@ void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, do
   auto check = [&](const ParticleRecord& a, const ParticleRecord& b, const Vec3& shift) {
     const double overlap = a.radius + b.radius - norm(a.x - (b.x + shift));
     if (overlap > maxOverlap * (a.radius + b.radius))
-      fail(option, "particles " + std::to_string(a.id) + " and " + std::to_string(b.id) + " overlap by " + str(overlap) +
-                       " m, more than -particles_max_overlap " + str(maxOverlap) + " of their mean diameter");
+      failOption(option, "particles " + std::to_string(a.id) + " and " + std::to_string(b.id) + " overlap by " + formatNumber(overlap) +
+                       " m, more than -particles_max_overlap " + formatNumber(maxOverlap) + " of their mean diameter");
   };
   buckets.forEachCandidate(p.size(), [&](std::size_t i, std::size_t j) { check(p[i], p[j], {}); });
   // Pairs across periodic faces: compare the spheres near a periodic face with the shifted others.

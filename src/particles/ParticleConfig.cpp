@@ -10,10 +10,6 @@ namespace vp {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& option, const std::string& what) { failOption(option, what); }
-
-std::string str(double v) { return formatNumber(v); }
-
 void parseTrack(const std::string& s, ParticleConfig& c)
 {
   if (s.empty()) return;
@@ -26,14 +22,14 @@ void parseTrack(const std::string& s, ParticleConfig& c)
   while (std::getline(in, item, ',')) {
     char* end = nullptr;
     long long v = std::strtoll(item.c_str(), &end, 10);
-    if (item.empty() || *end != 0 || v < 0) fail("-track_particles", "expected all or a comma-separated list of ids >= 0, got '" + s + "'");
+    if (item.empty() || *end != 0 || v < 0) failOption("-track_particles", "expected all or a comma-separated list of ids >= 0, got '" + s + "'");
     c.track.push_back(v);
   }
 }
 
 std::uint64_t seed(double v, const char* option)
 {
-  if (!(v >= 0) || v != std::floor(v)) fail(option, "seed must be an integer >= 0, got " + str(v));
+  if (!(v >= 0) || v != std::floor(v)) failOption(option, "seed must be an integer >= 0, got " + formatNumber(v));
   return static_cast<std::uint64_t>(v);
 }
 
@@ -93,31 +89,31 @@ ParticleConfig ParticleConfig::read()
 void ParticleConfig::validate() const
 {
   auto positive = [](double v, const char* opt) {
-    if (!(v > 0) || !std::isfinite(v)) fail(opt, "must be > 0, got " + str(v));
+    if (!(v > 0) || !std::isfinite(v)) failOption(opt, "must be > 0, got " + formatNumber(v));
   };
   int sources = !file.empty() + lattice.set + random.set + single.set;
-  if (sources > 1) fail("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particle_position");
+  if (sources > 1) failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particle_position");
   positive(radius, "-particle_radius");
   positive(density, "-particle_density");
   if (lattice.set) {
     positive(lattice.spacing, "-particles_lattice");
     positive(lattice.radius, "-particles_lattice");
-    if (2 * lattice.radius > lattice.spacing) fail("-particles_lattice", "spacing " + str(lattice.spacing) + " must be >= the diameter " + str(2 * lattice.radius));
-    if (!(lattice.jitter >= 0 && lattice.jitter <= 1)) fail("-particles_lattice", "jitter must be in [0, 1], got " + str(lattice.jitter));
+    if (2 * lattice.radius > lattice.spacing) failOption("-particles_lattice", "spacing " + formatNumber(lattice.spacing) + " must be >= the diameter " + formatNumber(2 * lattice.radius));
+    if (!(lattice.jitter >= 0 && lattice.jitter <= 1)) failOption("-particles_lattice", "jitter must be in [0, 1], got " + formatNumber(lattice.jitter));
     for (int d = 0; d < 3; ++d)
-      if (!(lattice.hi[d] > lattice.lo[d])) fail("-particles_lattice", "box upper corner must exceed its lower corner");
+      if (!(lattice.hi[d] > lattice.lo[d])) failOption("-particles_lattice", "box upper corner must exceed its lower corner");
   }
   if (random.set) {
     positive(random.radius, "-particles_random");
     if (!(random.volumeFraction > 0 && random.volumeFraction <= 0.35))
-      fail("-particles_random", "volume fraction must be in (0, 0.35] (random sequential addition), got " + str(random.volumeFraction));
+      failOption("-particles_random", "volume fraction must be in (0, 0.35] (random sequential addition), got " + formatNumber(random.volumeFraction));
     for (int d = 0; d < 3; ++d)
-      if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) fail("-particles_random", "box must be wider than a particle diameter along every axis");
+      if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) failOption("-particles_random", "box must be wider than a particle diameter along every axis");
   }
-  if (!(maxOverlap >= 0 && maxOverlap < 0.5)) fail("-particles_max_overlap", "must be in [0, 0.5), got " + str(maxOverlap));
+  if (!(maxOverlap >= 0 && maxOverlap < 0.5)) failOption("-particles_max_overlap", "must be in [0, 0.5), got " + formatNumber(maxOverlap));
   contact.validate();
-  if (substeps < 1) fail("-dem_substeps", "must be >= 1, got " + std::to_string(substeps));
-  if (!(skin > 0 && skin <= 1)) fail("-dem_skin", "must be in (0, 1], got " + str(skin));
+  if (substeps < 1) failOption("-dem_substeps", "must be >= 1, got " + std::to_string(substeps));
+  if (!(skin > 0 && skin <= 1)) failOption("-dem_skin", "must be in (0, 1], got " + formatNumber(skin));
 }
 
 } // namespace vp

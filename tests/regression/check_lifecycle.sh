@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The run lifecycle as a user meets it (docs/robustness.md); one scenario per call:
 #   check_lifecycle.sh <scenario> <vpsolve> <work dir>
-# help | rerun | output_dir_file | restart_setup | signal | wall_limit
+# help | rerun | output_dir_file | restart_setup | signal | wall_limit | disk_full | defaults
 set -u
 scenario=$1 vp=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
@@ -59,6 +59,22 @@ wall_limit)  # -time_wall_limit: a checkpoint and exit 0
   grep -q "reached -time_wall_limit" wl.log || fail "no stop reason"
   ls out | grep -q "checkpoint_0.*h5" || fail "no checkpoint"
   ls out | grep -q "fields_0.*h5" || fail "no final snapshot" ;;
+disk_full)  # a full disk stops the run (status 3) with the earlier snapshots and their index intact
+  mkdir small
+  mount -t tmpfs -o size=3m tmpfs small 2>/dev/null || { echo "skipped: cannot mount a small file system here"; exit 77; }
+  trap 'umount "$work/small"' EXIT
+  run -grid_n 16,16,16 -time_max_steps 200 -time_final 1e9 -output_every 1 -output_dir small/out >full.log 2>&1; status=$?
+  [ $status = 3 ] || fail "exit status $status, not 3: $(tail -3 full.log)"
+  grep -q "the file system of -output_dir 'small/out' has .* MB free, the snapshot of step .* needs about" full.log || fail "no message"
+  n=$(ls small/out | grep -c "^fields_.*h5$")
+  [ "$n" -gt 3 ] || fail "only $n snapshots before the disk was full"
+  [ "$(grep -c "<Grid Name=\"step" small/out/fields.xmf)" = "$n" ] || fail "fields.xmf does not list the $n snapshots on disk"
+  /usr/bin/python3 -c "import h5py, sys; [h5py.File(f)['velocity'][...] for f in sys.argv[1:]]" small/out/fields_*.h5 || fail "a snapshot is unreadable" ;;
+defaults)  # a lone sphere needs no contact options; LLCM without a roughness runs
+  run $BOX -time_max_steps 5 -particle_position 0.5,0.5,0.5 -particle_radius 0.1 -particle_fixed -output_dir lone >lone.log 2>&1 || fail "lone sphere: $(tail -2 lone.log)"
+  grep -q "no contact stiffness given: -contact_tc .* s, ten times the first fluid step" lone.log || fail "the chosen contact time is not in the log"
+  [ -e lone/fields_000005.h5 ] || fail "no final snapshot after 5 steps"
+  run $BOX -time_max_steps 5 -particle_position 0.5,0.5,0.5 -particle_radius 0.1 -lub_model llcm -output_dir llcm >llcm.log 2>&1 || fail "llcm without roughness: $(tail -2 llcm.log)" ;;
 *) fail "unknown scenario $scenario" ;;
 esac
 echo "ok: $scenario"

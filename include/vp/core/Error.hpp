@@ -22,8 +22,20 @@ struct PetscFailure : std::runtime_error {
   PetscErrorCode code;
 };
 
+// While alive, a failing PETSc call returns its error code without PETSc's own trace: the caller
+// reports the error in its own words (a file that cannot be written, say).
+class QuietPetscErrors {
+public:
+  QuietPetscErrors() { PetscPushErrorHandler(PetscReturnErrorHandler, nullptr); }
+  ~QuietPetscErrors() { PetscPopErrorHandler(); }
+  QuietPetscErrors(const QuietPetscErrors&) = delete;
+  QuietPetscErrors& operator=(const QuietPetscErrors&) = delete;
+};
+
 // Throws InputError("option <option>: <what>").
 [[noreturn]] void failOption(const std::string& option, const std::string& what);
+// Throws InputError("option <option>: <what>, got <value>").
+[[noreturn]] void failOption(const std::string& option, const std::string& what, double value);
 // A number as the user would write it (for error messages).
 std::string formatNumber(double v);
 

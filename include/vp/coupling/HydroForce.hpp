@@ -14,7 +14,7 @@
 
 namespace vp {
 
-// sums: kHydroSums per particle from Penalization::apply (partial on every rank that holds part
+// sums: kHydroSums per particle from Penalization::forces and addFluidMomentum (partial on every rank that holds part
 // of a sphere); reduced to the owners here. Sets fhyd, thyd of the owned particles and remembers
 // their fluid momentum. dt = 0: initial state, only the fluid momentum is recorded. Collective.
 void hydroForces(ParticleStore& s, ParticleExchange& exchange, std::vector<double>& sums, double dt, double rho,

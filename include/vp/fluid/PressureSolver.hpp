@@ -3,7 +3,7 @@
 // volume: the finite-volume form, which multigrid coarsens well), lap_h the cell-centred 7-point operator with
 // zero normal gradient at walls (symmetric positive semi-definite; the constant null space is
 // attached). KSP prefix -pressure_. Defaults: CG + hypre BoomerAMG tuned for the 3-D 7-point
-// Laplacian (see docs/solvers.md); -pressure_pc_type mg (geometric multigrid on the DMDA with
+// Laplacian (see docs/fluid.md, linear solvers); -pressure_pc_type mg (geometric multigrid on the DMDA with
 // rediscretised coarse levels), -pressure_pc_type pfmg (hypre PFMG) and -pressure_pc_type fft (an
 // exact FFT inverse, FftPoisson.hpp; KSP preonly by default with it) also work. The operator
 // is assembled and the preconditioner set up once; each solve starts from the previous solution.

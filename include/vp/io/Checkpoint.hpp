@@ -39,6 +39,9 @@ public:
              const std::vector<ParticleRecord>& owned);
 
 private:
+  // The HDF5 file itself (collective).
+  void writeFile(const std::string& tmp, const Grid& grid, const BoundaryConfig& bc, const RunState& run,
+                 const FluidState& fluid, const std::vector<ParticleRecord>& owned);
   MPI_Comm comm_;
   std::string dir_;
   int keep_;

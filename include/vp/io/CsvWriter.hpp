@@ -25,6 +25,7 @@ public:
   void row(const std::vector<double>& values);  // collective-free: only rank 0 writes
 
 private:
+  std::string path_;
   std::FILE* file_ = nullptr;
   size_t columns_;
 };

@@ -15,5 +15,8 @@ std::vector<std::string> runOutputs(const std::string& dir);
 void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
 // Creates dir; with overwrite (and no restart) removes the previous run's outputs.
 void prepareOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
+// Before writing `what` (about `bytes`): throws RunFailure if dir's file system has less room,
+// so that a full disk stops the run with the earlier files intact. Collective.
+void requireSpace(MPI_Comm comm, const std::string& dir, double bytes, const std::string& what);
 
 } // namespace vp
