@@ -2,6 +2,7 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/grid/Boundary.hpp"
+#include "vp/grid/FieldArray.hpp"
 #include <algorithm>
 #include <cmath>
 #include <petscsys.h>
@@ -50,51 +51,50 @@ void Penalization::build(const ParticleStore& s, double dt)
   const Grid& g = grid_;
   VP_CALL(VecSet(chi_, 0));
   VP_CALL(VecSet(us_, 0));
-  PetscScalar ****chi, ****us;
-  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), chi_, &chi));
-  VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), us_, &us));
-  const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
-  owner_.assign(3 * nx * ny * (g.end(2) - g.start(2)), -1);
-  const double eps = support_;
-  for (std::size_t p = 0; p < s.size(); ++p) {
-    const Vec3 X = s.x[p];
-    const double a = s.radius[p], reach = a + eps;
-    for (int c = 0; c < 3; ++c) {
-      // Owned faces of component c within reach of the centre (face c sits at index i along c).
-      PetscInt lo[3], hi[3];
-      for (int d = 0; d < 3; ++d) {
-        const double off = d == c ? 0 : 0.5;
-        lo[d] = std::max<PetscInt>(g.start(d), PetscInt(std::ceil((X[d] - reach - g.lo(d)) / g.h(d) - off)));
-        hi[d] = std::min<PetscInt>(g.end(d), PetscInt(std::floor((X[d] + reach - g.lo(d)) / g.h(d) - off)) + 1);
+  {
+    FaceArray chiA(g.faceDM(), chi_), usA(g.faceDM(), us_);
+    PetscScalar ****chi = chiA.a, ****us = usA.a;
+    const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
+    owner_.assign(3 * nx * ny * (g.end(2) - g.start(2)), -1);
+    const double eps = support_;
+    for (std::size_t p = 0; p < s.size(); ++p) {
+      const Vec3 X = s.x[p];
+      const double a = s.radius[p], reach = a + eps;
+      for (int c = 0; c < 3; ++c) {
+        // Owned faces of component c within reach of the centre (face c sits at index i along c).
+        PetscInt lo[3], hi[3];
+        for (int d = 0; d < 3; ++d) {
+          const double off = d == c ? 0 : 0.5;
+          lo[d] = std::max<PetscInt>(g.start(d), PetscInt(std::ceil((X[d] - reach - g.lo(d)) / g.h(d) - off)));
+          hi[d] = std::min<PetscInt>(g.end(d), PetscInt(std::floor((X[d] + reach - g.lo(d)) / g.h(d) - off)) + 1);
+        }
+        for (PetscInt k = lo[2]; k < hi[2]; ++k)
+          for (PetscInt j = lo[1]; j < hi[1]; ++j)
+            for (PetscInt i = lo[0]; i < hi[0]; ++i) {
+              Vec3 x{g.cellCentre(0, i), g.cellCentre(1, j), g.cellCentre(2, k)};
+              const PetscInt q[3] = {i, j, k};
+              x[c] = g.faceCoord(c, q[c]);
+              const Vec3 r = x - X;
+              const double phi = a - norm(r);  // > 0 inside
+              double value;
+              if (eps == 0) value = phi > 0 ? 1 : 0;
+              else if (phi <= -eps) value = 0;
+              else if (phi >= eps) value = 1;
+              else value = 0.5 * (1 + phi / eps + std::sin(M_PI * phi / eps) / M_PI);
+              if (value <= chi[k][j][i][c]) continue;
+              chi[k][j][i][c] = value;
+              us[k][j][i][c] = (s.v[p] + cross(s.w[p], r))[c];
+              owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c] = static_cast<int>(p);
+            }
       }
-      for (PetscInt k = lo[2]; k < hi[2]; ++k)
-        for (PetscInt j = lo[1]; j < hi[1]; ++j)
-          for (PetscInt i = lo[0]; i < hi[0]; ++i) {
-            Vec3 x{g.cellCentre(0, i), g.cellCentre(1, j), g.cellCentre(2, k)};
-            const PetscInt q[3] = {i, j, k};
-            x[c] = g.faceCoord(c, q[c]);
-            const Vec3 r = x - X;
-            const double phi = a - norm(r);  // > 0 inside
-            double value;
-            if (eps == 0) value = phi > 0 ? 1 : 0;
-            else if (phi <= -eps) value = 0;
-            else if (phi >= eps) value = 1;
-            else value = 0.5 * (1 + phi / eps + std::sin(M_PI * phi / eps) / M_PI);
-            if (value <= chi[k][j][i][c]) continue;
-            chi[k][j][i][c] = value;
-            us[k][j][i][c] = (s.v[p] + cross(s.w[p], r))[c];
-            owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c] = static_cast<int>(p);
-          }
     }
   }
-  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), us_, &us));
-  VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), chi_, &chi));
   VP_CALL(VecCopy(chi_, theta_));
   VP_CALL(VecScale(theta_, lambda_ * dt));
   {
     // A wall face keeps its boundary value: no penalization there.
-    PetscScalar**** t;
-    VP_CALL(DMDAVecGetArrayDOF(g.faceDM(), theta_, &t));
+    FaceArray tA(g.faceDM(), theta_);
+    PetscScalar**** t = tA.a;
     for (int c = 0; c < 3; ++c) {
       if (!g.atLow(c)) continue;
       PetscInt lo[3] = {g.start(0), g.start(1), g.start(2)}, hi[3] = {g.end(0), g.end(1), g.end(2)};
@@ -103,7 +103,6 @@ void Penalization::build(const ParticleStore& s, double dt)
         for (PetscInt j = lo[1]; j < hi[1]; ++j)
           for (PetscInt i = lo[0]; i < hi[0]; ++i) t[k][j][i][c] = 0;
     }
-    VP_CALL(DMDAVecRestoreArrayDOF(g.faceDM(), theta_, &t));
   }
   VP_CALL(VecPointwiseMult(thetaUs_, theta_, us_));
 }
@@ -113,8 +112,8 @@ template <class F>
 void Penalization::forCovered(const ParticleStore& s, F&& f) const
 {
   const Grid& g = grid_;
-  PetscScalar**** chi;
-  VP_CALL(DMDAVecGetArrayDOFRead(g.faceDM(), chi_, &chi));
+  FaceArray chiA(g.faceDM(), chi_, true);
+  PetscScalar**** chi = chiA.a;
   const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
   for (PetscInt k = g.start(2); k < g.end(2); ++k)
     for (PetscInt j = g.start(1); j < g.end(1); ++j)
@@ -128,16 +127,14 @@ void Penalization::forCovered(const ParticleStore& s, F&& f) const
           f(i, j, k, c, p, x - s.x[p], chi[k][j][i][c]);
         }
       }
-  VP_CALL(DMDAVecRestoreArrayDOFRead(g.faceDM(), chi_, &chi));
 }
 
 void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const
 {
   sums.assign(kHydroSums * s.size(), 0.0);
   const double dV = grid_.cellVolume();
-  PetscScalar ****a, ****us;
-  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), uStar, &a));
-  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), us_, &us));
+  FaceArray aA(grid_.faceDM(), uStar, true), usA(grid_.faceDM(), us_, true);
+  PetscScalar ****a = aA.a, ****us = usA.a;
   forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
@@ -149,15 +146,13 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
       sum[3 + m] += t[m];
     }
   });
-  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), us_, &us));
-  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), uStar, &a));
 }
 
 void Penalization::addFluidMomentum(const ParticleStore& s, Vec u, std::vector<double>& sums) const
 {
   const double dV = grid_.cellVolume();
-  PetscScalar**** a;
-  VP_CALL(DMDAVecGetArrayDOFRead(grid_.faceDM(), u, &a));
+  FaceArray aA(grid_.faceDM(), u, true);
+  PetscScalar**** a = aA.a;
   forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
     Vec3 momentum;
     momentum[c] = rho_ * chi * a[k][j][i][c] * dV;
@@ -168,7 +163,6 @@ void Penalization::addFluidMomentum(const ParticleStore& s, Vec u, std::vector<d
       sum[9 + m] += moment[m];
     }
   });
-  VP_CALL(DMDAVecRestoreArrayDOFRead(grid_.faceDM(), u, &a));
 }
 
 } // namespace vp

@@ -3,6 +3,7 @@
 #include "vp/core/OptionDefaults.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Boundary.hpp"
+#include "vp/grid/FieldArray.hpp"
 #include <string>
 
 namespace vp {
@@ -141,10 +142,10 @@ PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
   const Grid& g = self->grid_;
   DM f = g.faceSolveDM();
   PetscCall(DMGlobalToLocal(f, x, INSERT_VALUES, self->xL_));
-  PetscScalar**** xa;
-  PetscCall(DMDAVecGetArrayDOF(f, self->xL_, &xa));
-  fillFaceGhosts(g, self->bc_, xa, true);
-  PetscCall(DMDAVecRestoreArrayDOF(f, self->xL_, &xa));
+  {
+    FaceArray xa(f, self->xL_);
+    fillFaceGhosts(g, self->bc_, xa.a, true);
+  }
   PetscInt gs[3], gm[3];
   PetscCall(DMDAGetGhostCorners(f, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
   const PetscScalar *xl, *xg, *s, *th = nullptr;

@@ -1,14 +1,13 @@
 #include "vp/fluid/Operators.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <cmath>
+#include <cstddef>
 
 namespace vp::ops {
 
 namespace {
 
 constexpr PetscInt E[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-
-inline PetscScalar at(PetscScalar**** u, PetscInt i, PetscInt j, PetscInt k, int c) { return u[k][j][i][c]; }
 
 // Loops over the owned cells (k, j, i).
 template <class F>
@@ -19,40 +18,54 @@ void forOwned(const Grid& g, F&& f)
       for (PetscInt i = g.start(0); i < g.end(0); ++i) f(i, j, k);
 }
 
+// The convective flux divergence and the Laplacian of component C at the face q points to, with
+// o[d] the offset of the next face along axis d (3 values per face, the DMDA's ghosted layout).
+template <int C>
+inline void faceTerms(const PetscScalar* q, const std::ptrdiff_t o[3], const double ih[3], const double ih2[3],
+                      PetscScalar& n, PetscScalar& l)
+{
+  const double uc = q[C];
+  double adv = 0, lap = 0;
+  for (int d = 0; d < 3; ++d) {
+    const double up = q[C + o[d]], um = q[C - o[d]];
+    lap += (up - 2 * uc + um) * ih2[d];
+    if (d == C) {
+      // Momentum flux through the cell centres on either side of the face.
+      const double fp = 0.5 * (uc + up), fm = 0.5 * (um + uc);
+      adv += (fp * fp - fm * fm) * ih[d];
+    } else {
+      // Flux through the two edges (C-face, d-face) of the face's control volume.
+      const double vp = 0.5 * (q[d + o[d]] + q[d + o[d] - o[C]]);
+      const double vm = 0.5 * (q[d] + q[d - o[C]]);
+      adv += (vp * 0.5 * (uc + up) - vm * 0.5 * (um + uc)) * ih[d];
+    }
+  }
+  n = adv;
+  l = lap;
+}
+
 } // namespace
 
 void advectionAndLaplacian(const Grid& g, PetscScalar**** u, PetscScalar**** N, PetscScalar**** L)
 {
   const double ih[3] = {1 / g.h(0), 1 / g.h(1), 1 / g.h(2)};
   const double ih2[3] = {ih[0] * ih[0], ih[1] * ih[1], ih[2] * ih[2]};
-  forOwned(g, [&](PetscInt i, PetscInt j, PetscInt k) {
-    const PetscInt p[3] = {i, j, k};
-    for (int c = 0; c < 3; ++c) {
-      if (isFixedFace(g, c, p[c])) continue;
-      const PetscScalar uc = at(u, i, j, k, c);
-      double adv = 0, lap = 0;
-      for (int d = 0; d < 3; ++d) {
-        const PetscInt* e = E[d];
-        const PetscScalar up = at(u, i + e[0], j + e[1], k + e[2], c);
-        const PetscScalar um = at(u, i - e[0], j - e[1], k - e[2], c);
-        lap += (up - 2 * uc + um) * ih2[d];
-        if (d == c) {
-          // Momentum flux through the cell centres on either side of the face.
-          const double fp = 0.5 * (uc + up), fm = 0.5 * (um + uc);
-          adv += (fp * fp - fm * fm) * ih[d];
-        } else {
-          // Flux through the two edges (c-face, d-face) of the face's control volume.
-          const PetscInt* ec = E[c];
-          const double vp = 0.5 * (at(u, i + e[0], j + e[1], k + e[2], d) +
-                                   at(u, i + e[0] - ec[0], j + e[1] - ec[1], k + e[2] - ec[2], d));
-          const double vm = 0.5 * (at(u, i, j, k, d) + at(u, i - ec[0], j - ec[1], k - ec[2], d));
-          adv += (vp * 0.5 * (uc + up) - vm * 0.5 * (um + uc)) * ih[d];
-        }
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2);
+  // Offsets of the neighbouring faces in the ghosted array (rows are contiguous along x).
+  const std::ptrdiff_t o[3] = {3, &u[k0][j0 + 1][i0][0] - &u[k0][j0][i0][0], &u[k0 + 1][j0][i0][0] - &u[k0][j0][i0][0]};
+  // Fixed (wall) faces keep N = L = 0: face 0 of a wall-bounded axis.
+  const PetscInt iFree = isFixedFace(g, 0, i0) ? i0 + 1 : i0;
+  for (PetscInt k = k0; k < g.end(2); ++k)
+    for (PetscInt j = j0; j < g.end(1); ++j) {
+      const bool free1 = !isFixedFace(g, 1, j), free2 = !isFixedFace(g, 2, k);
+      const PetscScalar* q = &u[k][j][i0][0];
+      PetscScalar *n = &N[k][j][i0][0], *l = &L[k][j][i0][0];
+      for (PetscInt i = i0; i < g.end(0); ++i, q += 3, n += 3, l += 3) {
+        if (i >= iFree) faceTerms<0>(q, o, ih, ih2, n[0], l[0]);
+        if (free1) faceTerms<1>(q, o, ih, ih2, n[1], l[1]);
+        if (free2) faceTerms<2>(q, o, ih, ih2, n[2], l[2]);
       }
-      N[k][j][i][c] = adv;
-      L[k][j][i][c] = lap;
     }
-  });
 }
 
 void divergence(const Grid& g, PetscScalar**** u, PetscScalar*** div)

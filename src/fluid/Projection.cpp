@@ -2,38 +2,13 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
 #include "vp/grid/Boundary.hpp"
+#include "vp/grid/FieldArray.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace vp {
 
 namespace {
-
-// Scoped DMDA array access.
-struct FaceArray {
-  FaceArray(DM dm, Vec v, bool read = false) : dm(dm), v(v), read(read)
-  {
-    if (read) VP_CALL(DMDAVecGetArrayDOFRead(dm, v, &a));
-    else VP_CALL(DMDAVecGetArrayDOF(dm, v, &a));
-  }
-  ~FaceArray()
-  {
-    if (read) DMDAVecRestoreArrayDOFRead(dm, v, &a);
-    else DMDAVecRestoreArrayDOF(dm, v, &a);
-  }
-  DM dm;
-  Vec v;
-  bool read;
-  PetscScalar**** a;
-};
-
-struct CellArray {
-  CellArray(DM dm, Vec v) : dm(dm), v(v) { VP_CALL(DMDAVecGetArray(dm, v, &a)); }
-  ~CellArray() { DMDAVecRestoreArray(dm, v, &a); }
-  DM dm;
-  Vec v;
-  PetscScalar*** a;
-};
 
 double norm2(Vec v)
 {
@@ -85,14 +60,24 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
     // rhs = dt [ -(c1 N^n - c0 N^{n-1}) + nu L u^n + f ] - dt/rho grad p^n, zero on fixed faces.
     const double c0 = dtOld_ > 0 ? 0.5 * dt / dtOld_ : 0, c1 = 1 + c0;
     FaceArray r(g.faceDM(), rhs_), Nold(g.faceDM(), Nold_);
-    for (PetscInt k = g.start(2); k < g.end(2); ++k)
-      for (PetscInt j = g.start(1); j < g.end(1); ++j)
-        for (PetscInt i = g.start(0); i < g.end(0); ++i) {
-          const PetscInt q[3] = {i, j, k};
-          for (int c = 0; c < 3; ++c)
-            r.a[k][j][i][c] = isFixedFace(g, c, q[c]) ? 0
-                              : dt * (-(c1 * N.a[k][j][i][c] - c0 * Nold.a[k][j][i][c]) + nu_ * L.a[k][j][i][c] + force_[c]);
-        }
+    {
+      // One pass over the owned faces, stored contiguously (3 values per face).
+      const PetscInt k0 = g.start(2), j0 = g.start(1), i0 = g.start(0);
+      const std::size_t n = 3 * std::size_t(g.end(0) - i0) * (g.end(1) - j0) * (g.end(2) - k0);
+      PetscScalar* rp = &r.a[k0][j0][i0][0];
+      const PetscScalar *np = &N.a[k0][j0][i0][0], *op = &Nold.a[k0][j0][i0][0], *lp = &L.a[k0][j0][i0][0];
+      for (std::size_t q = 0; q < n; q += 3)
+        for (int c = 0; c < 3; ++c)
+          rp[q + c] = dt * (-(c1 * np[q + c] - c0 * op[q + c]) + nu_ * lp[q + c] + force_[c]);
+    }
+    for (int c = 0; c < 3; ++c) {  // fixed faces: face 0 of a wall-bounded axis
+      if (!isFixedFace(g, c, g.start(c))) continue;
+      PetscInt hi[3] = {g.end(0), g.end(1), g.end(2)};
+      hi[c] = g.start(c) + 1;
+      for (PetscInt k = g.start(2); k < hi[2]; ++k)
+        for (PetscInt j = g.start(1); j < hi[1]; ++j)
+          for (PetscInt i = g.start(0); i < hi[0]; ++i) r.a[k][j][i][c] = 0;
+    }
     ops::addGradient(g, p.a, -dt / rho_, r.a);
   }
   {
