@@ -12,7 +12,7 @@ namespace {
 
 // Measured peak resident memory (docs/robustness.md): about 45 MB per rank plus 0.95 kB per cell
 // with BoomerAMG (0.74 kB with fft) on the 32^3 and 64^3 cavities.
-constexpr double kBytesPerRank = 50e6, kBytesPerCell = 1000, kBytesPerBucket = 16;
+constexpr double kBytesPerRank = 50e6, kBytesPerCell = 1000;
 
 double availableBytes()
 {
@@ -71,15 +71,7 @@ void RunConfig::checkMemory(MPI_Comm comm) const
   MPI_Comm_free(&node);
   const GridConfig& g = main.grid;
   const double cells = double(g.n[0]) * g.n[1] * g.n[2];
-  double perRank = kBytesPerRank + kBytesPerCell * cells / size;
-  if (particles.any()) {
-    // Contact search cells of about a diameter over each subdomain (docs/particles.md).
-    const double r = particles.lattice.set ? particles.lattice.radius
-                     : particles.random.set ? particles.random.radius : particles.radius;
-    double buckets = 1;
-    for (int d = 0; d < 3; ++d) buckets *= std::ceil((g.hi[d] - g.lo[d]) / (2 * r)) + 2;
-    perRank += kBytesPerBucket * buckets / size;
-  }
+  const double perRank = kBytesPerRank + kBytesPerCell * cells / size;
   const double need = perRank * nodeSize, have = availableBytes();
   int bad = have > 0 && need > 0.9 * have ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);

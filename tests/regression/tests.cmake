@@ -204,3 +204,16 @@ foreach(scenario help rerun output_dir_file restart_setup signal wall_limit disk
            $<TARGET_FILE:vpsolve> ${CMAKE_CURRENT_BINARY_DIR}/lifecycle/${scenario})
   set_tests_properties(lifecycle_${scenario} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" SKIP_RETURN_CODE 77)
 endforeach()
+
+# Particle memory follows the particles: one sphere of radius 1e-4 m in a 1 m box (10^12 contact
+# cells of the box; 2 GB before) runs 100 DEM steps within 10 MB of the peak resident memory of the
+# same run with a sphere of radius 0.1 m (the process itself, libraries included, is about 50 MB).
+set(VP_ONE_DEM $<TARGET_FILE:vpsolve> -fluid_off -grid_n 4,4,4 -particle_position 0.5,0.5,0.5 -particle_velocity 0.01,0,0
+    -contact_tc 1e-3 -time_dt 1e-4 -time_max_steps 100 -monitor_every 0)
+string(REPLACE ";" " " VP_ONE_DEM "${VP_ONE_DEM}")
+add_test(NAME dem_one_small_sphere_big_box
+         COMMAND sh -c "rm -rf small big && /usr/bin/time -f %M -o small.rss ${VP_ONE_DEM} -particle_radius 1e-4 -output_dir small >/dev/null \
+                 && /usr/bin/time -f %M -o big.rss ${VP_ONE_DEM} -particle_radius 0.1 -output_dir big >/dev/null \
+                 && echo \"peak kB: $(tail -n 1 small.rss) (r 1e-4), $(tail -n 1 big.rss) (r 0.1)\" \
+                 && test $(( $(tail -n 1 small.rss) - $(tail -n 1 big.rss) )) -lt 10000")
+set_tests_properties(dem_one_small_sphere_big_box PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
