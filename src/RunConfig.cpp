@@ -57,6 +57,7 @@ void RunConfig::validate(MPI_Comm comm) const
     failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
   if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
     failOption("-contact_tc", "a DEM-only run needs a contact stiffness: set -contact_tc, -contact_tc_steps or -contact_kn");
+  if (main.fluid.off && !main.output.probes.empty()) failOption("-probe", "pressure probes need the fluid (not with -fluid_off)");
   if (memoryCheck) checkMemory(comm);
 }
 

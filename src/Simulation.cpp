@@ -91,6 +91,8 @@ void Simulation::openOutputs()
     tracker_ = std::make_unique<ParticleTracker>(comm, dir, particleCfg_, dem_->particles(), resumeTime);
   }
   diagnostics_ = std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, resumeStep);
+  if (!cfg_.output.probes.empty() && !cfg_.fluid.off)
+    probes_ = std::make_unique<Probes>(grid_, cfg_.output.probes, dir, restart_ ? time_ : -1);
   if (restart_) {
     fields_->resume(restart_->fieldSnapshots);
     if (particleWriter_) particleWriter_->resume(restart_->particleSnapshots);
@@ -267,6 +269,7 @@ int Simulation::run()
   if (!restart_) {
     if (snapshots_.on()) output();
     if (tracker_) tracker_->record(dem_->particles(), time_);
+    if (probes_) probes_->record(time_, fluid_->pressure());
   }
   restart_.reset();
   std::string stop;
@@ -332,6 +335,7 @@ void Simulation::stopOnFailure(const std::string& problem, double loopStart)
 void Simulation::record()
 {
   if (tracker_) tracker_->record(dem_->particles(), time_);
+  if (probes_) probes_->record(time_, fluid_->pressure());
   if (diagnostics_)
     diagnostics_->record(step_, time_, fluid_->previousDt(), last_, fluid_->stats(), cfg_.fluid.rho, MPI_Wtime() - wallStart_,
                          dem_.get());

@@ -15,6 +15,7 @@
 #include "vp/io/FieldWriter.hpp"
 #include "vp/io/ParticleTracker.hpp"
 #include "vp/io/ParticleWriter.hpp"
+#include "vp/io/Probes.hpp"
 #include "vp/io/Schedule.hpp"
 #include "vp/particles/DemSolver.hpp"
 #include <memory>
@@ -72,6 +73,7 @@ private:
   std::unique_ptr<Projection> fluid_;
   std::unique_ptr<FieldWriter> fields_;
   std::unique_ptr<Diagnostics> diagnostics_;
+  std::unique_ptr<Probes> probes_;                 // -probe
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
   std::unique_ptr<Penalization> penalization_;     // particles in a fluid
   std::vector<double> hydroSums_;

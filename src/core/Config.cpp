@@ -77,6 +77,9 @@ Config Config::read()
     c.output.dt = o.real("-output_dt", c.output.dt, "Simulated time between field snapshots (s; 0: none)");
     c.output.monitorEvery = o.integer("-monitor_every", c.output.monitorEvery, "Steps between progress lines (0: none)");
     c.output.overwrite = o.flag("-output_overwrite", false, "Replace the outputs of another run found in -output_dir");
+    const std::vector<double> probes = o.realList("-probe", "Pressure probes x,y,z[,x,y,z...] (m): probes.csv, one row per step");
+    if (probes.size() % 3) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
+    for (std::size_t k = 0; k + 2 < probes.size(); k += 3) c.output.probes.push_back({probes[k], probes[k + 1], probes[k + 2]});
   }
   {
     OptionGroup o("Checkpoint/restart", false);
@@ -129,6 +132,12 @@ void Config::validate() const
   if (!(output.dt >= 0)) failOption("-output_dt", "must be >= 0 (0: no snapshots), got " + formatNumber(output.dt));
   if (output.monitorEvery < 0) failOption("-monitor_every", "must be >= 0, got " + std::to_string(output.monitorEvery));
   if (output.dir.empty()) failOption("-output_dir", "must not be empty");
+  for (std::size_t p = 0; p < output.probes.size(); ++p)
+    for (int d = 0; d < 3; ++d)
+      if (!(output.probes[p][d] >= grid.lo[d] && output.probes[p][d] <= grid.hi[d]))
+        failOption("-probe", "probe " + std::to_string(p) + " at " + std::string("xyz").substr(d, 1) + " = " +
+                                 formatNumber(output.probes[p][d]) + " lies outside the domain [" + formatNumber(grid.lo[d]) +
+                                 ", " + formatNumber(grid.hi[d]) + "]");
   if (checkpoint.every < 0) failOption("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
   if (!(checkpoint.dt >= 0)) failOption("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + formatNumber(checkpoint.dt));
   if (!(time.wallLimit >= 0)) failOption("-time_wall_limit", "must be >= 0 (0: none), got " + formatNumber(time.wallLimit));

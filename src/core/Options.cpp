@@ -60,16 +60,21 @@ int parseInt(const std::string& text)
   return static_cast<int>(d);
 }
 
-std::vector<double> parseList(const std::string& text, std::size_t n, const char* form)
+std::vector<double> parseAnyList(const std::string& text)
 {
   std::vector<double> v;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
     v.push_back(parseReal(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
+    if (comma == std::string::npos) return v;
     start = comma + 1;
   }
+}
+
+std::vector<double> parseList(const std::string& text, std::size_t n, const char* form)
+{
+  const std::vector<double> v = parseAnyList(text);
   if (v.size() != n)
     throw BadValue{"needs " + std::to_string(n) + " comma-separated values (" + form + "), got " + std::to_string(v.size())};
   return v;
@@ -207,6 +212,12 @@ std::vector<double> OptionGroup::reals(const char* name, std::size_t n, const ch
 {
   const char* r = raw(name, std::string("none (") + form + ")", help);
   return parsed(name, r, std::vector<double>{}, [&](const std::string& t) { return parseList(t, n, form); });
+}
+
+std::vector<double> OptionGroup::realList(const char* name, const char* help)
+{
+  const char* r = raw(name, "none", help);
+  return parsed(name, r, std::vector<double>{}, parseAnyList);
 }
 
 const std::vector<OptionInfo>& registeredOptions() { return registry; }

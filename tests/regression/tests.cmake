@@ -217,3 +217,12 @@ add_test(NAME dem_one_small_sphere_big_box
                  && echo \"peak kB: $(tail -n 1 small.rss) (r 1e-4), $(tail -n 1 big.rss) (r 0.1)\" \
                  && test $(( $(tail -n 1 small.rss) - $(tail -n 1 big.rss) )) -lt 10000")
 set_tests_properties(dem_one_small_sphere_big_box PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+
+# Pressure probes: probes.csv with the initial row and one row per step, on 2 ranks.
+add_test(NAME probes_csv
+         COMMAND sh -c "rm -rf probes && ${MPIEXEC_EXECUTABLE} -n 2 --oversubscribe $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts \
+                 -grid_n 16,16,16 -time_max_steps 3 -monitor_every 0 -probe 0.5,0.1,0.5,0.25,0.9,0.75 -output_dir probes >/dev/null \
+                 && test \"$(head -n 1 probes/probes.csv)\" = time,p_0,p_1 && test $(wc -l < probes/probes.csv) = 5")
+set_tests_properties(probes_csv PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+vp_bad_input(probe_outside 1 "option -probe: probe 1 at y = 1.5 lies outside the domain \\[0, 1\\]" -probe 0.5,0.5,0.5,0.5,1.5,0.5)
+vp_bad_input(probe_count 1 "option -probe: needs x,y,z per probe \\(a multiple of 3 values\\), got 4" -probe 0.5,0.5,0.5,0.5)

@@ -6,6 +6,7 @@
 #include <array>
 #include <mpi.h>
 #include <string>
+#include <vector>
 
 namespace vp {
 
@@ -54,6 +55,7 @@ struct OutputConfig {
   int monitorEvery = 10;                   // steps between progress lines (0: none)
   bool files = true;                       // false: no files at all (library use in tests)
   bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
+  std::vector<Vec3> probes;                // -probe x,y,z,...: pressure probes (probes.csv) [m]
 };
 
 // Checks after every step that stop a run going wrong (docs/robustness.md).

@@ -34,6 +34,8 @@ public:
   Vec3 vec3(const char* name, const Vec3& def, const char* help, bool* given = nullptr);
   // Exactly `n` comma-separated numbers when given (`form` names them for messages), else empty.
   std::vector<double> reals(const char* name, std::size_t n, const char* form, const char* help);
+  // Any number of comma-separated numbers (empty when not given).
+  std::vector<double> realList(const char* name, const char* help);
 
 private:
   // The raw text of an option (nullptr if not given), recorded with its default.
