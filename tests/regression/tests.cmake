@@ -226,3 +226,5 @@ add_test(NAME probes_csv
 set_tests_properties(probes_csv PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
 vp_bad_input(probe_outside 1 "option -probe: probe 1 at y = 1.5 lies outside the domain \\[0, 1\\]" -probe 0.5,0.5,0.5,0.5,1.5,0.5)
 vp_bad_input(probe_count 1 "option -probe: needs x,y,z per probe \\(a multiple of 3 values\\), got 4" -probe 0.5,0.5,0.5,0.5)
+# The dam-break columns' solid fraction (scripts/column_phi) on a lattice of known packing.
+add_test(NAME column_phi_lattice COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_column_phi.sh lattice_column.csv)
