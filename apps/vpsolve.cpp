@@ -81,7 +81,7 @@ int runCase(MPI_Comm comm)
   cfg.validate(comm);
   vp::Simulation sim(comm, cfg);
   vp::checkUnknownOptions(comm, cfg.allowUnknownOptions);
-  vp::checkOutputDir(comm, cfg.main.output.dir, !cfg.main.checkpoint.restart.empty(), cfg.main.output.overwrite);
+  vp::checkOutputDir(comm, cfg.main.output.dir, cfg.main.checkpoint.restart, cfg.main.output.overwrite);
   vp::installStopSignals();
   return sim.run();
 }

@@ -11,7 +11,13 @@ namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
 
-extern "C" void onStopSignal(int s) { stopSignal = s; }
+// The first signal asks for a stop at the next step boundary; a second one (a hung run) is
+// handled by the default action.
+extern "C" void onStopSignal(int s)
+{
+  stopSignal = s;
+  std::signal(s, SIG_DFL);
+}
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -25,6 +31,7 @@ void installStopSignals()
 {
   struct sigaction a {};
   a.sa_handler = onStopSignal;
+  a.sa_flags = SA_RESTART;  // a write interrupted by the signal goes on
   sigemptyset(&a.sa_mask);
   sigaction(SIGTERM, &a, nullptr);
   sigaction(SIGINT, &a, nullptr);

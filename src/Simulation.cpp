@@ -288,17 +288,15 @@ int Simulation::run()
     const double t0 = MPI_Wtime();
     try {
       advance(dt);
-    } catch (const PetscFailure&) {
-      throw;
-    } catch (const std::exception& e) {
-      // Solver divergence, unstable lubrication, lost particles: decided collectively.
+    } catch (const StepFailure& e) {
+      // Decided collectively. The state is half-advanced: no snapshot of it (the earlier ones stay).
       stopOnFailure("in the step of dt = " + formatNumber(dt) + " s to t = " + formatNumber(time_ + dt) + " s: " + e.what(),
-                    loopStart);
+                    loopStart, false);
     }
     wallLastStep_ = MPI_Wtime() - t0;
     record();
     const StepVerdict v = guard_.check(dt, fluid_->stats(), dem_.get(), MPI_Wtime() - wallStart_, wallLastStep_);
-    if (!v.problem.empty()) stopOnFailure(v.problem, loopStart);
+    if (!v.problem.empty()) stopOnFailure(v.problem, loopStart, true);
     if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
       monitor(dt);
       if (tracker_) tracker_->flush();  // a running case's particle_<id>.csv can be followed too
@@ -324,12 +322,14 @@ int Simulation::run()
   return status;
 }
 
-void Simulation::stopOnFailure(const std::string& problem, double loopStart)
+void Simulation::stopOnFailure(const std::string& problem, double loopStart, bool snapshot)
 {
-  output();  // the state that failed, for inspection
+  snapshot = snapshot && snapshots_.lastStep() != step_;
+  if (snapshot) output();  // the completed step that failed a check, for inspection
   loopWall_ = MPI_Wtime() - loopStart;
   finish("failed: " + problem);
-  throw RunFailure("the run stopped (above); the snapshot of step " + std::to_string(step_) + " is written for inspection");
+  throw RunFailure(snapshot ? "the run stopped (above); the snapshot of step " + std::to_string(step_) + " is written for inspection"
+                            : "the run stopped (above); the outputs of the last completed step are kept");
 }
 
 void Simulation::record()

@@ -44,8 +44,9 @@ public:
 private:
   void openOutputs();
   void record();      // diagnostics row and tracked particles of the step just taken
-  // A failed health check or solver: snapshot, summary and run.json, then RunFailure (collective).
-  [[noreturn]] void stopOnFailure(const std::string& problem, double loopStart);
+  // A failed health check (snapshot: of the completed step) or step: summary and run.json, then
+  // RunFailure (collective).
+  [[noreturn]] void stopOnFailure(const std::string& problem, double loopStart, bool snapshot);
   void output();      // field and particle snapshot
   void checkpoint();  // checkpoint_<step>.h5 (docs/outputs.md)
   // Continues from -restart: fluid state, particles, counters, output lists.

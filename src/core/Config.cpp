@@ -26,7 +26,7 @@ Config Config::read()
     OptionGroup o("Grid: uniform 3-D box");
     const Vec3 n = o.vec3("-grid_n", {32, 32, 32}, "Cells per axis nx,ny,nz");
     for (int d = 0; d < 3; ++d) {
-      if (n[d] != std::floor(n[d]) || std::fabs(n[d]) > 1e9) failOption("-grid_n", "needs whole numbers of cells, got " + formatNumber(n[d]));
+      if (!optionsHelpMode() && (n[d] != std::floor(n[d]) || std::fabs(n[d]) > 1e9)) failOption("-grid_n", "needs whole numbers of cells, got " + formatNumber(n[d]));
       c.grid.n[d] = static_cast<int>(n[d]);
     }
     const Vec3 lo = o.vec3("-grid_lo", {0, 0, 0}, "Lower corner x,y,z of the domain (m)");
@@ -78,7 +78,7 @@ Config Config::read()
     c.output.monitorEvery = o.integer("-monitor_every", c.output.monitorEvery, "Steps between progress lines (0: none)");
     c.output.overwrite = o.flag("-output_overwrite", false, "Replace the outputs of another run found in -output_dir");
     const std::vector<double> probes = o.realList("-probe", "Pressure probes x,y,z[,x,y,z...] (m): probes.csv, one row per step");
-    if (probes.size() % 3) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
+    if (probes.size() % 3 && !optionsHelpMode()) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
     for (std::size_t k = 0; k + 2 < probes.size(); k += 3) c.output.probes.push_back({probes[k], probes[k + 1], probes[k + 2]});
   }
   {

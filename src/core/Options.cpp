@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <petscsys.h>
 
 namespace vp {
@@ -15,10 +16,21 @@ namespace {
 std::vector<OptionInfo> registry;
 bool helpMode = false;
 
+// A number as the record keeps it: every digit, so that equal values compare equal as text.
+std::string canonical(double v)
+{
+  char b[32];
+  for (int digits = 15; digits <= 17; ++digits) {  // the shortest form that reads back the same
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
+  return b;
+}
+
 std::string joinNumbers(const double* v, std::size_t n)
 {
   std::string s;
-  for (std::size_t i = 0; i < n; ++i) s += (i ? "," : "") + formatNumber(v[i]);
+  for (std::size_t i = 0; i < n; ++i) s += (i ? "," : "") + canonical(v[i]);
   return s;
 }
 
@@ -117,9 +129,13 @@ std::size_t editDistance(const std::string& a, const std::string& b)
   return row[b.size()];
 }
 
-// PETSc options that PETSc itself reads at solve time or at exit, not at set-up.
+// PETSc options that PETSc itself reads at solve time, at a solver's first set-up or at exit.
 bool readLaterByPetsc(const std::string& name)
 {
+  const bool solver = name.rfind("pressure_", 0) == 0 || name.rfind("velocity_", 0) == 0;
+  if (solver)
+    for (const char* part : {"sub_", "mg_levels_", "mg_coarse_", "redundant_"})
+      if (name.find(part) != std::string::npos) return true;
   static const char* const prefixes[] = {"log", "options_", "malloc", "info", "objects_", "fp_trap", "on_error",
                                          "no_signal_handler", "debugger", "start_in_debugger", "stop_for_debugger",
                                          "memory_view", "checkstack", "history", "help", "version", "viewer_"};
@@ -143,6 +159,7 @@ const char* OptionGroup::raw(const char* name, const std::string& defaultText, c
   PetscBool set = PETSC_FALSE;
   VP_CALL(PetscOptionsGetString(nullptr, nullptr, name, buf, sizeof buf, &set));
   if (!set) return nullptr;
+  if (std::strlen(buf) >= sizeof buf - 1) failOption(name, "value longer than " + std::to_string(sizeof buf - 2) + " characters");
   o->given = true;
   o->value = buf;
   buffer_ = buf;
@@ -153,14 +170,18 @@ void OptionGroup::setValue(const char* name, const std::string& value) { find(na
 
 double OptionGroup::real(const char* name, double def, const char* help)
 {
-  const char* r = raw(name, formatNumber(def), help);
-  return parsed(name, r, def, parseReal);
+  const char* r = raw(name, canonical(def), help);
+  const double v = parsed(name, r, def, parseReal);
+  if (r && !helpMode) setValue(name, canonical(v));
+  return v;
 }
 
 int OptionGroup::integer(const char* name, int def, const char* help)
 {
   const char* r = raw(name, std::to_string(def), help);
-  return parsed(name, r, def, parseInt);
+  const int v = parsed(name, r, def, parseInt);
+  if (r && !helpMode) setValue(name, std::to_string(v));
+  return v;
 }
 
 bool OptionGroup::flag(const char* name, bool def, const char* help)
@@ -202,27 +223,36 @@ Vec3 OptionGroup::vec3(const char* name, const Vec3& def, const char* help, bool
   const double d[3] = {def.x, def.y, def.z};
   const char* r = raw(name, joinNumbers(d, 3), help);
   if (given) *given = r != nullptr;
-  return parsed(name, r, def, [](const std::string& t) {
+  const Vec3 v = parsed(name, r, def, [](const std::string& t) {
     const std::vector<double> v = parseList(t, 3, "x,y,z");
     return Vec3{v[0], v[1], v[2]};
   });
+  const double vv[3] = {v.x, v.y, v.z};
+  if (r && !helpMode) setValue(name, joinNumbers(vv, 3));
+  return v;
 }
 
 std::vector<double> OptionGroup::reals(const char* name, std::size_t n, const char* form, const char* help)
 {
   const char* r = raw(name, std::string("none (") + form + ")", help);
-  return parsed(name, r, std::vector<double>{}, [&](const std::string& t) { return parseList(t, n, form); });
+  const std::vector<double> v = parsed(name, r, std::vector<double>{}, [&](const std::string& t) { return parseList(t, n, form); });
+  if (r && !helpMode) setValue(name, joinNumbers(v.data(), v.size()));
+  return v;
 }
 
 std::vector<double> OptionGroup::realList(const char* name, const char* help)
 {
   const char* r = raw(name, "none", help);
-  return parsed(name, r, std::vector<double>{}, parseAnyList);
+  const std::vector<double> v = parsed(name, r, std::vector<double>{}, parseAnyList);
+  if (r && !helpMode) setValue(name, joinNumbers(v.data(), v.size()));
+  return v;
 }
 
 const std::vector<OptionInfo>& registeredOptions() { return registry; }
 
 void setOptionsHelpMode(bool on) { helpMode = on; }
+
+bool optionsHelpMode() { return helpMode; }
 
 std::vector<std::string> unusedOptions()
 {
@@ -231,8 +261,12 @@ std::vector<std::string> unusedOptions()
   char** values;
   VP_CALL(PetscOptionsLeftGet(nullptr, &n, &names, &values));
   std::vector<std::string> out;
-  for (PetscInt i = 0; i < n; ++i)
-    if (!readLaterByPetsc(names[i])) out.push_back(std::string("-") + names[i]);
+  for (PetscInt i = 0; i < n; ++i) {
+    const std::string name = std::string("-") + names[i];
+    // A name close to one of vpsolve's is a misspelling even if it looks like a PETSc viewer's.
+    const bool solver = name.rfind("-pressure_", 0) == 0 || name.rfind("-velocity_", 0) == 0;
+    if (!readLaterByPetsc(names[i]) || (!solver && !nearestOption(name).empty())) out.push_back(name);
+  }
   VP_CALL(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   return out;
 }

@@ -238,7 +238,7 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
   KSPConvergedReason reason;
   VP_CALL(KSPGetConvergedReason(ksp_, &reason));
   if (reason < 0)
-    throw std::runtime_error(std::string("velocity (diffusion) solve did not converge: ") +
+    throw StepFailure(std::string("velocity (diffusion) solve did not converge: ") +
                              KSPConvergedReasons[reason] + " (see -velocity_ksp_monitor)");
   PetscInt its;
   VP_CALL(KSPGetIterationNumber(ksp_, &its));

@@ -212,7 +212,7 @@ int PressureSolver::solve(Vec b, Vec x, double atol)
   KSPConvergedReason reason;
   VP_CALL(KSPGetConvergedReason(ksp_, &reason));
   if (reason < 0)
-    throw std::runtime_error(std::string("pressure solve did not converge: ") + KSPConvergedReasons[reason] +
+    throw StepFailure(std::string("pressure solve did not converge: ") + KSPConvergedReasons[reason] +
                              " (see -pressure_ksp_monitor, -pressure_ksp_max_it)");
   PetscInt its;
   VP_CALL(KSPGetIterationNumber(ksp_, &its));

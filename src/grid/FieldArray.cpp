@@ -8,6 +8,7 @@ namespace {
 
 // The pointer tables of one vector: valid while its array stays where it was.
 struct Table {
+  Vec owner = nullptr;  // VecDuplicate copies composed objects: a duplicate must not share this
   const PetscScalar* base = nullptr;
   PetscInt s[3] = {0, 0, 0}, m[3] = {0, 0, 0}, dof = 0;
   // Faces: a point's 3 values per (k, j, i), its row per (k, j), its plane per k.
@@ -41,6 +42,7 @@ Table& table(DM dm, Vec v, PetscScalar* base)
   VP_CALL(PetscObjectQuery((PetscObject)v, "vp_array_table", (PetscObject*)&c));
   Table* t = nullptr;
   if (c) VP_CALL(PetscContainerGetPointer(c, (void**)&t));
+  if (t && t->owner != v) t = nullptr;  // inherited from the vector this one duplicates
   PetscInt s[3], m[3], dof;
   box(dm, v, s, m, dof);
   const bool same = t && t->base == base && t->dof == dof && s[0] == t->s[0] && s[1] == t->s[1] && s[2] == t->s[2] &&
@@ -54,6 +56,7 @@ Table& table(DM dm, Vec v, PetscScalar* base)
     VP_CALL(PetscObjectCompose((PetscObject)v, "vp_array_table", (PetscObject)c));
     VP_CALL(PetscContainerDestroy(&c));  // the vector holds it now
   }
+  t->owner = v;
   t->base = base;
   t->dof = dof;
   for (int d = 0; d < 3; ++d) t->s[d] = s[d], t->m[d] = m[d];
@@ -83,7 +86,12 @@ FaceArray::FaceArray(DM dm, Vec v, bool read) : v_(v), read_(read)
 {
   if (read) VP_CALL(VecGetArrayRead(v, const_cast<const PetscScalar**>(&base_)));
   else VP_CALL(VecGetArray(v, &base_));
-  a = static_cast<PetscScalar****>(table(dm, v, base_).array);
+  try {
+    a = static_cast<PetscScalar****>(table(dm, v, base_).array);
+  } catch (...) {
+    this->~FaceArray();
+    throw;
+  }
 }
 
 FaceArray::~FaceArray()
@@ -96,7 +104,12 @@ CellArray::CellArray(DM dm, Vec v, bool read) : v_(v), read_(read)
 {
   if (read) VP_CALL(VecGetArrayRead(v, const_cast<const PetscScalar**>(&base_)));
   else VP_CALL(VecGetArray(v, &base_));
-  a = static_cast<PetscScalar***>(table(dm, v, base_).array);
+  try {
+    a = static_cast<PetscScalar***>(table(dm, v, base_).array);
+  } catch (...) {
+    this->~CellArray();
+    throw;
+  }
 }
 
 CellArray::~CellArray()

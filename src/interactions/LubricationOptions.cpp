@@ -20,7 +20,7 @@ LubricationParams readLubricationOptions()
                                                          "(0: the contact roughness, or 4e-4 without one)");
   p.llcmRegion = o.real("-lub_llcm_r0", p.llcmRegion,
                         "LLCM lubrication-region radius r0 in units of the reduced radius (<= 1 keeps the parabolic gap valid)");
-
+  if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
   if (!(p.activationCells >= 0 && std::isfinite(p.activationCells)))

@@ -13,7 +13,7 @@ namespace vp {
 std::vector<std::string> runOutputs(const std::string& dir)
 {
   static const std::regex names(R"((run\.json|diagnostics\.csv|probes\.csv|(fields|particles)\.xmf|)"
-                                R"((fields|particles|checkpoint)_(\d{6}|latest)\.h5|particle_\d+\.csv))");
+                                R"((fields|particles|checkpoint)_(\d{6,}|latest)\.h5|particle_\d+\.csv))");
   std::vector<std::string> out;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return out;
@@ -38,7 +38,7 @@ void agree(MPI_Comm comm, std::string error)
 
 } // namespace
 
-void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite)
+void checkOutputDir(MPI_Comm comm, const std::string& dir, const std::string& restart, bool overwrite)
 {
   int rank;
   MPI_Comm_rank(comm, &rank);
@@ -48,7 +48,11 @@ void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool ov
     const std::vector<std::string> old = runOutputs(dir);
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
       error = "option -output_dir: '" + dir + "' exists and is not a directory";
-    else if (!old.empty() && !restart && !overwrite)
+    else if (!old.empty() && !restart.empty() && !overwrite &&
+             !fs::equivalent(fs::path(restart).parent_path().empty() ? "." : fs::path(restart).parent_path(), dir, ec))
+      error = "option -restart: the checkpoint '" + restart + "' is not in -output_dir '" + dir + "', which holds another run; "
+              "continue a run in its own directory, or choose an empty -output_dir";
+    else if (!old.empty() && restart.empty() && !overwrite)
       error = "option -output_dir: '" + dir + "' holds another run (" + std::to_string(old.size()) + " files: " + old.front() +
               (old.size() > 1 ? ", ..." : "") + "); choose another -output_dir, continue it with -restart " + dir +
               "/checkpoint_latest.h5, or give -output_overwrite to replace it";

@@ -65,7 +65,17 @@ std::string runRecordJson(MPI_Comm comm, const std::string& end)
 
 const std::string& runRecord()
 {
-  static const std::string record = runRecordJson(PETSC_COMM_WORLD);
+  // Rank 0's (host and date differ between ranks; parallel HDF5 needs one value everywhere).
+  static const std::string record = [] {
+    int rank;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    std::string r = rank == 0 ? runRecordJson(PETSC_COMM_WORLD) : std::string();
+    int length = static_cast<int>(r.size());
+    MPI_Bcast(&length, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    r.resize(length);
+    MPI_Bcast(r.data(), length, MPI_CHAR, 0, PETSC_COMM_WORLD);
+    return r;
+  }();
   return record;
 }
 

@@ -22,7 +22,8 @@ void CellBuckets::build(const std::vector<Vec3>& x, std::size_t n, const Vec3& l
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) {
       const double k = std::floor((x[i][d] - lo[d]) * inv[d]);
-      cellOf_[i][d] = k < 0 ? 0 : k >= N[d] ? N[d] - 1 : static_cast<std::int64_t>(k);
+      // NaN goes to cell 0 too (the health check stops the run after the step).
+      cellOf_[i][d] = !(k >= 0) ? 0 : k >= N[d] ? N[d] - 1 : static_cast<std::int64_t>(k);
       cmin[d] = std::min(cmin[d], cellOf_[i][d]);
       cmax[d] = std::max(cmax[d], cellOf_[i][d]);
     }

@@ -376,7 +376,7 @@ void DemSolver::checkLubricationSeen(double dtp)
   msg << "option -dem_substeps: the DEM sub-step " << dtp << " s is unstable for the lubrication of a pair at its gap (c dt_p / m* = "
       << worst * dtp << " > 1; the saturated resistance needs dt_p <= " << lubStableSubstep_
       << " s): raise -dem_substeps to at least " << requiredSubsteps(dtp) << ", or lower -time_dt, or raise -lub_saturation";
-  throw InputError(msg.str());
+  throw StepFailure(msg.str());
 }
 
 void DemSolver::advance(double, double dt)

@@ -219,7 +219,7 @@ std::size_t ParticleExchange::migrate(ParticleStore& s)
   int anyLost = 0;
   MPI_Allreduce(&lost, &anyLost, 1, MPI_INT, MPI_SUM, comm_);
   if (anyLost)
-    throw std::runtime_error(std::to_string(anyLost) + " particle(s) moved farther than one subdomain between two "
+    throw StepFailure(std::to_string(anyLost) + " particle(s) moved farther than one subdomain between two "
                              "neighbour-list rebuilds (time step too large for the particle speeds)");
   return sent;
 }

@@ -22,14 +22,14 @@ void parseTrack(const std::string& s, ParticleConfig& c)
   while (std::getline(in, item, ',')) {
     char* end = nullptr;
     long long v = std::strtoll(item.c_str(), &end, 10);
-    if (item.empty() || *end != 0 || v < 0) failOption("-track_particles", "expected all or a comma-separated list of ids >= 0, got '" + s + "'");
+    if ((item.empty() || *end != 0 || v < 0) && !optionsHelpMode()) failOption("-track_particles", "expected all or a comma-separated list of ids >= 0, got '" + s + "'");
     c.track.push_back(v);
   }
 }
 
 std::uint64_t seed(double v, const char* option)
 {
-  if (!(v >= 0) || v != std::floor(v)) failOption(option, "seed must be an integer >= 0, got " + formatNumber(v));
+  if (!optionsHelpMode() && (!(v >= 0) || v != std::floor(v))) failOption(option, "seed must be an integer >= 0, got " + formatNumber(v));
   return static_cast<std::uint64_t>(v);
 }
 
@@ -72,12 +72,17 @@ ParticleConfig ParticleConfig::read()
                                                    "constant velocity (forces still measured)");
     c.radius = o.real("-particle_radius", c.radius, "Radius of the single particle and of generated ones (m)");
     c.density = o.real("-particle_density", c.density, "Density of the single particle and of generated ones (kg/m^3)");
+  }
+  {
+    // Checks and outputs, not the set-up: a restart may change them.
+    OptionGroup o("Particles: input checks and tracking", false);
     c.maxOverlap = o.real("-particles_max_overlap", c.maxOverlap, "Largest overlap accepted in the initial particles "
                                                                   "(fraction of the mean diameter; settled packings overlap slightly)");
     parseTrack(o.text("-track_particles", "", "Write particle_<id>.csv for these particles: all or id,id,..."), c);
   }
   {
-    OptionGroup o("DEM time integration");
+    // The sub-steps change the numerics, not the set-up: a restart may raise them.
+    OptionGroup o("DEM time integration", false);
     c.substeps = o.integer("-dem_substeps", c.substeps, "DEM sub-steps per fluid step");
     c.skin = o.real("-dem_skin", c.skin, "Neighbour-list skin, fraction of the largest diameter");
   }

@@ -19,7 +19,8 @@ help)  # prints the options, exits 0, touches nothing
     grep -q -- "-grid_n <32,32,32> (given: 4,4,4)" help.log || fail "$h does not list -grid_n with its default and given value"
     grep -q -- "-bc_xlo <wall>.*(wall, slip, periodic, velocity)" help.log || fail "$h does not list the choices"
     [ "$(md5sum out/* | md5sum)" = "$before" ] || fail "$h changed the output directory"
-  done ;;
+  done
+  run -help -lub_activation -1 -grid_n 4.5,4,4 >help_bad.log 2>&1 || fail "-help with bad values exited non-zero" ;;
 rerun)  # a used directory is refused and kept; -output_overwrite replaces it
   run $BOX -time_max_steps 3 -output_dir out >/dev/null 2>&1 || fail "first run"
   before=$(md5sum out/* | md5sum)
@@ -37,8 +38,9 @@ output_dir_file)
   [ "$(cat afile)" = keep ] || fail "the file was changed" ;;
 restart_setup)  # a restart with other physics is refused, or warned with -restart_allow_changes
   run $BOX -time_max_steps 4 -checkpoint_every 2 -output_dir out >/dev/null 2>&1 || fail "first run"
+  run $BOX -time_max_steps 6 -restart out/checkpoint_000002.h5 -output_dir out -fluid_mu 1e-3 >same.log 2>&1 || fail "restart with the same -fluid_mu written 1e-3 refused: $(grep error same.log)"
   run $BOX -time_max_steps 6 -restart out/checkpoint_000002.h5 -output_dir out -fluid_mu 2e-3 >err.log 2>&1 && fail "restart with another -fluid_mu ran"
-  grep -q "option -restart: the checkpoint was written with other set-up options: -fluid_mu 0.001 (now 2e-3)" err.log || fail "no message naming -fluid_mu: $(cat err.log)"
+  grep -q "option -restart: the checkpoint was written with other set-up options: -fluid_mu 0.001 (now 0.002)" err.log || fail "no message naming -fluid_mu: $(cat err.log)"
   run $BOX -time_max_steps 6 -restart out/checkpoint_000002.h5 -output_dir out -fluid_mu 2e-3 -restart_allow_changes >ok.log 2>&1 || fail "-restart_allow_changes did not run"
   grep -q "warning: continuing with changed set-up options" ok.log || fail "no warning" ;;
 signal)  # SIGTERM: a checkpoint at the next step boundary, exit 128 + 15, and the run continues from it.

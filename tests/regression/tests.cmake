@@ -13,7 +13,7 @@ endfunction()
 function(vp_run_failure name np regex)
   add_test(NAME run_failure_${name} COMMAND ${VP_EXPECT_ERROR} ${np} "${regex}" ${CMAKE_CURRENT_BINARY_DIR}/run_failure/${name}
            $<TARGET_FILE:vpsolve> ${ARGN})
-  set_tests_properties(run_failure_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1;EXPECT_STATUS=3")
+  set_tests_properties(run_failure_${name} PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1;EXPECT_STATUS=3;EXPECT_SNAPSHOT=1")
 endfunction()
 vp_bad_input(unknown_bc 1 "option -bc_ylo: unknown value 'wal' \\(valid: wall, slip, periodic, velocity\\)" -bc_ylo wal)
 vp_bad_input(one_sided_periodic 1 "option -bc_xhi: periodic must be set on both x faces" -bc_xlo periodic)
@@ -110,9 +110,11 @@ vp_bad_input(lub_activation_twice 1 "option -lub_activation_cells: give either -
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1 -lub_activation_cells 2)
 # The saturated lubrication is an explicit dashpot: a sphere at the saturation gap with a sub-step
 # beyond its bound stops the run.
+# (a step that cannot be completed: no snapshot of its half-advanced state)
 vp_run_failure(lub_unstable_substep 1 "option -dem_substeps: the DEM sub-step .* is unstable for the lubrication .* raise -dem_substeps to at least"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.0010003 -particle_radius 0.001
              -lub_model blcm -lub_activation 0.1 -contact_roughness 1e-4 -fluid_mu 10 -time_dt 1e-3 -dem_substeps 1)
+set_tests_properties(run_failure_lub_unstable_substep PROPERTIES ENVIRONMENT "${VP_MPI_ENV};NEW_FILES_OK=1;EXPECT_STATUS=3")
 vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(valid: none, blcm, llcm\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model stokes)
 
@@ -228,3 +230,4 @@ vp_bad_input(probe_outside 1 "option -probe: probe 1 at y = 1.5 lies outside the
 vp_bad_input(probe_count 1 "option -probe: needs x,y,z per probe \\(a multiple of 3 values\\), got 4" -probe 0.5,0.5,0.5,0.5)
 # The dam-break columns' solid fraction (scripts/column_phi) on a lattice of known packing.
 add_test(NAME column_phi_lattice COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_column_phi.sh lattice_column.csv)
+vp_bad_input(misspelt_like_petsc 1 "-monitor_evry +\\(did you mean -monitor_every\\?\\)" -monitor_evry 5)

@@ -17,6 +17,13 @@ struct RunFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A time step that cannot be completed (a solver that did not converge, unstable lubrication,
+// lost particles), decided collectively so that every rank raises it: the run stops like a failed
+// health check. Anything else raised inside a step aborts the job.
+struct StepFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct PetscFailure : std::runtime_error {
   PetscFailure(PetscErrorCode code, const char* file, int line);
   PetscErrorCode code;

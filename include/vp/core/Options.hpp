@@ -51,6 +51,8 @@ const std::vector<OptionInfo>& registeredOptions();
 // In help mode a value that does not parse is reported by -help's listing instead of thrown, so
 // that every group is read and listed.
 void setOptionsHelpMode(bool on);
+// Readers skip the checks they make themselves in help mode.
+bool optionsHelpMode();
 
 // Options in the database that nothing has read, except the PETSc options that are read later
 // (viewers, monitors, logging, debugging): the misspelt ones.

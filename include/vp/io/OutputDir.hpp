@@ -11,8 +11,9 @@ namespace vp {
 // The files of a run found in dir (run.json, diagnostics.csv, fields/particles/checkpoint files,
 // particle_<id>.csv, their .xmf indices).
 std::vector<std::string> runOutputs(const std::string& dir);
-// No side effects: throws InputError if the run may not write into dir.
-void checkOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
+// No side effects: throws InputError if the run may not write into dir (restart: the -restart
+// path, "" if none; a restart continues the run of its own directory only).
+void checkOutputDir(MPI_Comm comm, const std::string& dir, const std::string& restart, bool overwrite);
 // Creates dir; with overwrite (and no restart) removes the previous run's outputs.
 void prepareOutputDir(MPI_Comm comm, const std::string& dir, bool restart, bool overwrite);
 // Before writing `what` (about `bytes`): throws RunFailure if dir's file system has less room,

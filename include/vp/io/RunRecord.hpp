@@ -14,7 +14,8 @@ void setCommandLine(int argc, char** argv);
 
 // The record as JSON; `end` holds extra top-level members ("\"stop_reason\": ...") or is empty.
 std::string runRecordJson(MPI_Comm comm, const std::string& end = "");
-// The start record of this run, built once (identical on every rank).
+// The start record of this run, built once on rank 0 and broadcast: the first call is collective
+// (writeRunRecord makes it when the outputs open).
 const std::string& runRecord();
 // Writes <dir>/run.json on rank 0 (atomically: a temporary file renamed).
 void writeRunRecord(MPI_Comm comm, const std::string& dir, const std::string& end = "");
