@@ -82,40 +82,33 @@ Table& table(DM dm, Vec v, PetscScalar* base)
 
 } // namespace
 
-FaceArray::FaceArray(DM dm, Vec v, bool read) : v_(v), read_(read)
+template <class T>
+DmdaArray<T>::DmdaArray(DM dm, Vec v, bool read) : v_(v), read_(read)
 {
   if (read) VP_CALL(VecGetArrayRead(v, const_cast<const PetscScalar**>(&base_)));
   else VP_CALL(VecGetArray(v, &base_));
   try {
-    a = static_cast<PetscScalar****>(table(dm, v, base_).array);
+    a = static_cast<T>(table(dm, v, base_).array);
   } catch (...) {
-    this->~FaceArray();
+    restore();
     throw;
   }
 }
 
-FaceArray::~FaceArray()
+template <class T>
+DmdaArray<T>::~DmdaArray()
+{
+  restore();
+}
+
+template <class T>
+void DmdaArray<T>::restore()
 {
   if (read_) VecRestoreArrayRead(v_, const_cast<const PetscScalar**>(&base_));
   else VecRestoreArray(v_, &base_);
 }
 
-CellArray::CellArray(DM dm, Vec v, bool read) : v_(v), read_(read)
-{
-  if (read) VP_CALL(VecGetArrayRead(v, const_cast<const PetscScalar**>(&base_)));
-  else VP_CALL(VecGetArray(v, &base_));
-  try {
-    a = static_cast<PetscScalar***>(table(dm, v, base_).array);
-  } catch (...) {
-    this->~CellArray();
-    throw;
-  }
-}
-
-CellArray::~CellArray()
-{
-  if (read_) VecRestoreArrayRead(v_, const_cast<const PetscScalar**>(&base_));
-  else VecRestoreArray(v_, &base_);
-}
+template class DmdaArray<PetscScalar****>;
+template class DmdaArray<PetscScalar***>;
 
 } // namespace vp

@@ -7,32 +7,24 @@
 
 namespace vp {
 
-class FaceArray {
+// T: PetscScalar**** (faces, [k][j][i][c]) or PetscScalar*** (cells, [k][j][i]).
+template <class T>
+class DmdaArray {
 public:
-  FaceArray(DM dm, Vec v, bool read = false);
-  ~FaceArray();
-  FaceArray(const FaceArray&) = delete;
-  FaceArray& operator=(const FaceArray&) = delete;
-  PetscScalar**** a;
+  DmdaArray(DM dm, Vec v, bool read = false);
+  ~DmdaArray();
+  DmdaArray(const DmdaArray&) = delete;
+  DmdaArray& operator=(const DmdaArray&) = delete;
+  T a;
 
 private:
+  void restore();
   Vec v_;
   bool read_;
   PetscScalar* base_;
 };
 
-class CellArray {
-public:
-  CellArray(DM dm, Vec v, bool read = false);
-  ~CellArray();
-  CellArray(const CellArray&) = delete;
-  CellArray& operator=(const CellArray&) = delete;
-  PetscScalar*** a;
-
-private:
-  Vec v_;
-  bool read_;
-  PetscScalar* base_;
-};
+using FaceArray = DmdaArray<PetscScalar****>;
+using CellArray = DmdaArray<PetscScalar***>;
 
 } // namespace vp
