@@ -54,8 +54,9 @@ void checkOutputDir(MPI_Comm comm, const std::string& dir, const std::string& re
               "continue a run in its own directory, or choose an empty -output_dir";
     else if (!old.empty() && restart.empty() && !overwrite)
       error = "option -output_dir: '" + dir + "' holds another run (" + std::to_string(old.size()) + " files: " + old.front() +
-              (old.size() > 1 ? ", ..." : "") + "); choose another -output_dir, continue it with -restart " + dir +
-              "/checkpoint_latest.h5, or give -output_overwrite to replace it";
+              (old.size() > 1 ? ", ..." : "") + "); choose another -output_dir" +
+              (fs::exists(dir + "/checkpoint_latest.h5", ec) ? ", continue it with -restart " + dir + "/checkpoint_latest.h5" : "") +
+              ", or give -output_overwrite to replace it";
   }
   agree(comm, error);
 }
