@@ -1,0 +1,96 @@
+// Stencil kernels against the memory bandwidth: each sweep of the fluid step timed alone on an
+// N^3 grid (median of repetitions) and turned into the bandwidth of its minimal traffic (every
+// array it reads and writes passed once), next to a STREAM-like copy (VecCopy) of a face vector.
+// usage: bench_kernels -n 128 -reps 20
+// prints: kernel,ms,bytes_per_cell,GB_per_s,percent_of_copy
+#include "vp/core/Config.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/fluid/Operators.hpp"
+#include "vp/grid/Boundary.hpp"
+#include "vp/grid/FieldArray.hpp"
+#include "vp/grid/Grid.hpp"
+#include <algorithm>
+#include <functional>
+#include <petscsys.h>
+#include <vector>
+
+namespace {
+
+double medianSeconds(int reps, const std::function<void()>& f)
+{
+  std::vector<double> t;
+  for (int r = 0; r < reps; ++r) {
+    const double t0 = MPI_Wtime();
+    f();
+    t.push_back(MPI_Wtime() - t0);
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (PetscInitialize(&argc, &argv, nullptr, "Kernel bandwidth benchmark\n") != 0) return 1;
+  try {
+    PetscInt n = 128, reps = 20;
+    PetscOptionsGetInt(nullptr, nullptr, "-n", &n, nullptr);
+    PetscOptionsGetInt(nullptr, nullptr, "-reps", &reps, nullptr);
+    vp::Config c;
+    c.grid.n = {int(n), int(n), int(n)};
+    vp::Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
+    Vec uL, N, L, a, b, div, phiL;
+    VP_CALL(DMCreateLocalVector(g.faceDM(), &uL));
+    for (Vec* v : {&N, &L, &a, &b}) VP_CALL(DMCreateGlobalVector(g.faceDM(), v));
+    VP_CALL(DMCreateGlobalVector(g.cellDM(), &div));
+    VP_CALL(DMCreateLocalVector(g.cellDM(), &phiL));
+    PetscRandom rnd;
+    VP_CALL(PetscRandomCreate(PETSC_COMM_WORLD, &rnd));
+    for (Vec v : {uL, N, L, a, b, div, phiL}) VP_CALL(VecSetRandom(v, rnd));
+    const double cells = double(g.cells());
+    struct Row {
+      const char* name;
+      double bytesPerCell;
+      std::function<void()> f;
+    };
+    const std::vector<Row> rows{
+      {"copy (VecCopy, face vector)", 48, [&] { VP_CALL(VecCopy(a, b)); }},
+      {"advection + Laplacian", 72, [&] {
+         vp::FaceArray u(g.faceDM(), uL), Na(g.faceDM(), N), La(g.faceDM(), L);
+         vp::ops::advectionAndLaplacian(g, u.a, Na.a, La.a);
+       }},
+      {"divergence", 32, [&] {
+         vp::FaceArray u(g.faceDM(), uL);
+         vp::CellArray d(g.cellDM(), div);
+         vp::ops::divergence(g, u.a, d.a);
+       }},
+      {"gradient (added to a face vector)", 56, [&] {
+         vp::CellArray p(g.cellDM(), phiL);
+         vp::FaceArray o(g.faceDM(), a);
+         vp::ops::addGradient(g, p.a, 1e-3, o.a);
+       }},
+      {"face -> cell centre", 48, [&] {
+         vp::FaceArray u(g.faceDM(), uL), o(g.faceDM(), b);
+         vp::ops::faceToCentre(g, u.a, o.a);
+       }},
+      {"ghost update (DMGlobalToLocal, face)", 48, [&] { VP_CALL(DMGlobalToLocal(g.faceDM(), a, INSERT_VALUES, uL)); }},
+    };
+    double copy = 0;
+    PetscPrintf(PETSC_COMM_WORLD, "kernel,ms,bytes_per_cell,GB_per_s,percent_of_copy\n");
+    for (const Row& r : rows) {
+      r.f();  // first touch
+      const double s = medianSeconds(int(reps), r.f);
+      const double gbs = r.bytesPerCell * cells / s / 1e9;
+      if (copy == 0) copy = gbs;
+      PetscPrintf(PETSC_COMM_WORLD, "%s,%.3f,%.0f,%.2f,%.0f\n", r.name, 1e3 * s, r.bytesPerCell, gbs, 100 * gbs / copy);
+    }
+    PetscRandomDestroy(&rnd);
+    for (Vec* v : {&uL, &N, &L, &a, &b, &div, &phiL}) VecDestroy(v);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_kernels: %s\n", e.what());
+    MPI_Abort(PETSC_COMM_WORLD, 2);
+  }
+  PetscFinalize();
+  return 0;
+}
