@@ -71,32 +71,51 @@ void advectionAndLaplacian(const Grid& g, PetscScalar**** u, PetscScalar**** N, 
 void divergence(const Grid& g, PetscScalar**** u, PetscScalar*** div)
 {
   const double ih[3] = {1 / g.h(0), 1 / g.h(1), 1 / g.h(2)};
-  forOwned(g, [&](PetscInt i, PetscInt j, PetscInt k) {
-    div[k][j][i] = (u[k][j][i + 1][0] - u[k][j][i][0]) * ih[0] + (u[k][j + 1][i][1] - u[k][j][i][1]) * ih[1] +
-                   (u[k + 1][j][i][2] - u[k][j][i][2]) * ih[2];
-  });
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), nx = g.end(0) - i0;
+  const std::ptrdiff_t sy = &u[k0][j0 + 1][i0][0] - &u[k0][j0][i0][0], sz = &u[k0 + 1][j0][i0][0] - &u[k0][j0][i0][0];
+  for (PetscInt k = k0; k < g.end(2); ++k)
+    for (PetscInt j = j0; j < g.end(1); ++j) {
+      const PetscScalar* q = &u[k][j][i0][0];
+      PetscScalar* d = &div[k][j][i0];
+      for (PetscInt i = 0; i < nx; ++i, q += 3)
+        d[i] = (q[3] - q[0]) * ih[0] + (q[sy + 1] - q[1]) * ih[1] + (q[sz + 2] - q[2]) * ih[2];
+    }
 }
 
 void addGradient(const Grid& g, PetscScalar*** phi, double scale, PetscScalar**** out)
 {
   const double s[3] = {scale / g.h(0), scale / g.h(1), scale / g.h(2)};
-  forOwned(g, [&](PetscInt i, PetscInt j, PetscInt k) {
-    const PetscInt p[3] = {i, j, k};
-    for (int c = 0; c < 3; ++c) {
-      if (isFixedFace(g, c, p[c])) continue;
-      const PetscInt* e = E[c];
-      out[k][j][i][c] += s[c] * (phi[k][j][i] - phi[k - e[2]][j - e[1]][i - e[0]]);
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), nx = g.end(0) - i0;
+  const std::ptrdiff_t py = &phi[k0][j0 + 1][i0] - &phi[k0][j0][i0], pz = &phi[k0 + 1][j0][i0] - &phi[k0][j0][i0];
+  // Fixed (wall) faces keep their value: face 0 of a wall-bounded axis.
+  const PetscInt iFree = isFixedFace(g, 0, i0) ? 1 : 0;
+  for (PetscInt k = k0; k < g.end(2); ++k)
+    for (PetscInt j = j0; j < g.end(1); ++j) {
+      const bool free1 = !isFixedFace(g, 1, j), free2 = !isFixedFace(g, 2, k);
+      const PetscScalar* p = &phi[k][j][i0];
+      PetscScalar* o = &out[k][j][i0][0];
+      for (PetscInt i = iFree; i < nx; ++i) o[3 * i] += s[0] * (p[i] - p[i - 1]);
+      if (free1)
+        for (PetscInt i = 0; i < nx; ++i) o[3 * i + 1] += s[1] * (p[i] - p[i - py]);
+      if (free2)
+        for (PetscInt i = 0; i < nx; ++i) o[3 * i + 2] += s[2] * (p[i] - p[i - pz]);
     }
-  });
 }
 
 void faceToCentre(const Grid& g, PetscScalar**** u, PetscScalar**** centre)
 {
-  forOwned(g, [&](PetscInt i, PetscInt j, PetscInt k) {
-    centre[k][j][i][0] = 0.5 * (u[k][j][i][0] + u[k][j][i + 1][0]);
-    centre[k][j][i][1] = 0.5 * (u[k][j][i][1] + u[k][j + 1][i][1]);
-    centre[k][j][i][2] = 0.5 * (u[k][j][i][2] + u[k + 1][j][i][2]);
-  });
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), nx = g.end(0) - i0;
+  const std::ptrdiff_t sy = &u[k0][j0 + 1][i0][0] - &u[k0][j0][i0][0], sz = &u[k0 + 1][j0][i0][0] - &u[k0][j0][i0][0];
+  for (PetscInt k = k0; k < g.end(2); ++k)
+    for (PetscInt j = j0; j < g.end(1); ++j) {
+      const PetscScalar* q = &u[k][j][i0][0];
+      PetscScalar* c = &centre[k][j][i0][0];
+      for (PetscInt i = 0; i < nx; ++i, q += 3, c += 3) {
+        c[0] = 0.5 * (q[0] + q[3]);
+        c[1] = 0.5 * (q[1] + q[sy + 1]);
+        c[2] = 0.5 * (q[2] + q[sz + 2]);
+      }
+    }
 }
 
 FieldStats stats(const Grid& g, PetscScalar**** u)
