@@ -1,4 +1,5 @@
 #include "vp/RunGuard.hpp"
+#include "vp/core/Broadcast.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
 #include <algorithm>
@@ -99,10 +100,8 @@ StepVerdict RunGuard::check(double dt, const ops::FieldStats& flow, DemSolver* d
   v.wallLimit = out[2] != 0;
   if (out[0] > 0) {
     const int from = size - out[0];
-    int length = rank == from ? int(problem.size()) : 0;
-    MPI_Bcast(&length, 1, MPI_INT, from, comm_);
-    v.problem = rank == from ? problem : std::string(length, ' ');
-    MPI_Bcast(v.problem.data(), length, MPI_CHAR, from, comm_);
+    v.problem = problem;
+    broadcast(comm_, v.problem, from);
   }
   return v;
 }

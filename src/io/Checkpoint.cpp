@@ -1,4 +1,5 @@
 #include "vp/io/Checkpoint.hpp"
+#include "vp/core/Broadcast.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/io/Hdf5.hpp"
@@ -262,15 +263,9 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     if (error.empty()) h5::readAttribute(file, "setup_options", setup_);
     if (file >= 0) H5Fclose(file);
   }
-  int length = static_cast<int>(error.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  error.resize(length);
-  MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
+  broadcast(comm, error);
   if (!error.empty()) failOption("-restart", error);
-  length = static_cast<int>(setup_.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  setup_.resize(length);
-  MPI_Bcast(setup_.data(), length, MPI_CHAR, 0, comm);
+  broadcast(comm, setup_);
   for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
   unpackRun(header, run_);
   run_.fieldSnapshots = fieldSnaps;

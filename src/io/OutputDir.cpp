@@ -1,4 +1,5 @@
 #include "vp/io/OutputDir.hpp"
+#include "vp/core/Broadcast.hpp"
 #include "vp/core/Error.hpp"
 #include <cmath>
 #include <cstdio>
@@ -27,12 +28,7 @@ namespace {
 // Rank 0 decides; every rank throws the same error.
 void agree(MPI_Comm comm, std::string error)
 {
-  int rank, length;
-  MPI_Comm_rank(comm, &rank);
-  length = rank == 0 ? int(error.size()) : 0;
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  error.resize(length);
-  MPI_Bcast(error.data(), length, MPI_CHAR, 0, comm);
+  broadcast(comm, error);
   if (!error.empty()) throw InputError(error);
 }
 

@@ -1,5 +1,6 @@
 #include "vp/io/RunRecord.hpp"
 #include "vp/Version.hpp"
+#include "vp/core/Broadcast.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include <cstdio>
@@ -70,10 +71,7 @@ const std::string& runRecord()
     int rank;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     std::string r = rank == 0 ? runRecordJson(PETSC_COMM_WORLD) : std::string();
-    int length = static_cast<int>(r.size());
-    MPI_Bcast(&length, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-    r.resize(length);
-    MPI_Bcast(r.data(), length, MPI_CHAR, 0, PETSC_COMM_WORLD);
+    broadcast(PETSC_COMM_WORLD, r);
     return r;
   }();
   return record;
