@@ -18,11 +18,12 @@ GhostBox ghostBox(DM dm)
   return b;
 }
 
-// Visits every ghosted (a, b) position of the two axes other than d, with idx[d] left to the caller.
+// Visits every ghosted (a, b) position of the two axes other than d, with idx[d] left to the caller;
+// the lower axis innermost, so that consecutive visits stay close in memory.
 template <class F>
 void forPlane(const GhostBox& g, int d, F&& f)
 {
-  int a = (d + 1) % 3, b = (d + 2) % 3;
+  const int a = d == 0 ? 1 : 0, b = d == 2 ? 1 : 2;
   PetscInt idx[3];
   for (idx[b] = g.s[b]; idx[b] < g.e[b]; ++idx[b])
     for (idx[a] = g.s[a]; idx[a] < g.e[a]; ++idx[a]) f(idx);
