@@ -57,6 +57,10 @@ void RunConfig::validate(MPI_Comm comm) const
     failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
   if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
     failOption("-contact_tc", "a DEM-only run needs a contact stiffness: set -contact_tc, -contact_tc_steps or -contact_kn");
+  if (!(particles.dragViscosity >= 0) || !std::isfinite(particles.dragViscosity))
+    failOption("-dem_drag_viscosity", "must be >= 0 (Pa s)", particles.dragViscosity);
+  if (!main.fluid.off && particles.dragViscosity > 0)
+    failOption("-dem_drag_viscosity", "is for DEM-only runs (-fluid_off); with the fluid on the resolved flow exerts the drag");
   if (main.fluid.off && !main.output.probes.empty()) failOption("-probe", "pressure probes need the fluid (not with -fluid_off)");
   if (memoryCheck) checkMemory(comm);
 }

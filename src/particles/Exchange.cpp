@@ -43,7 +43,7 @@ void putRecord(std::vector<char>& b, const ParticleRecord& r)
 {
   put(b, r.id); put(b, r.radius); put(b, r.density); put(b, r.flags);
   put(b, r.x); put(b, r.v); put(b, r.w); put(b, r.force); put(b, r.torque); put(b, r.fhyd); put(b, r.thyd);
-  put(b, r.vHalf); put(b, r.wHalf); put(b, r.fluidMomentum); put(b, r.fluidAngularMomentum);
+  put(b, r.vHalf); put(b, r.wHalf); put(b, r.vSeen); put(b, r.wSeen); put(b, r.fluidMomentum); put(b, r.fluidAngularMomentum);
   put(b, r.q); put(b, r.wallSpring);
   put(b, static_cast<std::uint32_t>(r.history.size()));
   for (const ContactSpring& c : r.history) put(b, c);
@@ -55,6 +55,7 @@ ParticleRecord getRecord(const char*& p)
   r.id = get<std::int64_t>(p); r.radius = get<double>(p); r.density = get<double>(p); r.flags = get<std::uint8_t>(p);
   r.x = get<Vec3>(p); r.v = get<Vec3>(p); r.w = get<Vec3>(p); r.force = get<Vec3>(p); r.torque = get<Vec3>(p);
   r.fhyd = get<Vec3>(p); r.thyd = get<Vec3>(p); r.vHalf = get<Vec3>(p); r.wHalf = get<Vec3>(p);
+  r.vSeen = get<Vec3>(p); r.wSeen = get<Vec3>(p);
   r.fluidMomentum = get<Vec3>(p); r.fluidAngularMomentum = get<Vec3>(p); r.q = get<Quaternion>(p);
   r.wallSpring = get<std::array<Vec3, 6>>(p);
   const auto n = get<std::uint32_t>(p);

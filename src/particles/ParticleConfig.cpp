@@ -85,6 +85,18 @@ ParticleConfig ParticleConfig::read()
     OptionGroup o("DEM time integration", false);
     c.substeps = o.integer("-dem_substeps", c.substeps, "DEM sub-steps per fluid step");
     c.skin = o.real("-dem_skin", c.skin, "Neighbour-list skin, fraction of the largest diameter");
+    c.implicitDrag = o.real("-dem_implicit_drag", c.implicitDrag,
+                            "Fraction k of the Stokes resistance (6 pi mu a, 8 pi mu a^3) by which the resolved force and "
+                            "torque follow the particle's own velocity change within a fluid step, implicit in the sub-steps: "
+                            "keeps the coupling stable when the fluid step exceeds the particle's viscous relaxation time "
+                            "(spin: rho_p d^2 / (60 mu)); 0: held fixed (docs/coupling.md)");
+  }
+  {
+    OptionGroup o("DEM-only liquid");
+    c.dragViscosity = o.real("-dem_drag_viscosity", c.dragViscosity,
+                             "Viscosity (Pa s) of a still liquid acting on each particle alone by Stokes drag -3 pi mu d v and "
+                             "torque -pi mu d^3 w, without buoyancy or interactions (preparing packings by sedimentation, "
+                             "-fluid_off only; 0: none)");
   }
   c.contact = readContactOptions();
   c.lubrication = readLubricationOptions();
@@ -96,6 +108,7 @@ void ParticleConfig::validate() const
   auto positive = [](double v, const char* opt) {
     if (!(v > 0) || !std::isfinite(v)) failOption(opt, "must be > 0, got " + formatNumber(v));
   };
+  if (!(implicitDrag >= 0 && implicitDrag <= 10)) failOption("-dem_implicit_drag", "must be in [0, 10]", implicitDrag);
   int sources = !file.empty() + lattice.set + random.set + single.set;
   if (sources > 1) failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particle_position");
   positive(radius, "-particle_radius");

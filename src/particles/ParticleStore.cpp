@@ -23,6 +23,8 @@ void ParticleStore::resize(std::size_t n)
   xRebuild.resize(n);
   vHalf.resize(n);
   wHalf.resize(n);
+  vSeen.resize(n);
+  wSeen.resize(n);
   fluidMomentum.resize(n);
   fluidAngularMomentum.resize(n);
   wallSpring.resize(n);
@@ -55,6 +57,8 @@ void ParticleStore::append(const ParticleRecord& r)
   xRebuild[i] = r.x;
   vHalf[i] = r.vHalf;
   wHalf[i] = r.wHalf;
+  vSeen[i] = r.vSeen;
+  wSeen[i] = r.wSeen;
   fluidMomentum[i] = r.fluidMomentum;
   fluidAngularMomentum[i] = r.fluidAngularMomentum;
   wallSpring[i] = r.wallSpring;
@@ -81,6 +85,8 @@ ParticleRecord ParticleStore::record(std::size_t i) const
   r.thyd = thyd[i];
   r.vHalf = vHalf[i];
   r.wHalf = wHalf[i];
+  r.vSeen = vSeen[i];
+  r.wSeen = wSeen[i];
   r.fluidMomentum = fluidMomentum[i];
   r.fluidAngularMomentum = fluidAngularMomentum[i];
   r.wallSpring = wallSpring[i];
@@ -99,6 +105,7 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
       x[k] = x[i]; v[k] = v[i]; w[k] = w[i]; q[k] = q[i];
       force[k] = force[i]; torque[k] = torque[i]; fhyd[k] = fhyd[i]; thyd[k] = thyd[i];
       xRebuild[k] = xRebuild[i]; vHalf[k] = vHalf[i]; wHalf[k] = wHalf[i];
+      vSeen[k] = vSeen[i]; wSeen[k] = wSeen[i];
       fluidMomentum[k] = fluidMomentum[i]; fluidAngularMomentum[k] = fluidAngularMomentum[i]; wallSpring[k] = wallSpring[i]; wallTouch[k] = wallTouch[i]; history[k] = std::move(history[i]);
     }
     ++k;

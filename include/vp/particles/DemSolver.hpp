@@ -72,6 +72,7 @@ private:
   void substep(double dt);
   bool needRebuild() const;
   void rebuild();
+  void addStokesDrag();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
   // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
@@ -111,7 +112,9 @@ private:
   double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]
   Vec3 gravity_;
   std::array<Wall, 6> walls_;
+  void relax(std::size_t i, double half, Vec3& v, Vec3& w) const;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
+  double drag_;                     // -dem_implicit_drag
   ContactHydro resolvedInContact_;  // -contact_hydro (keep in DEM-only runs)
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)

@@ -23,6 +23,7 @@ struct ParticleRecord {
   std::uint8_t flags = 0;
   Vec3 x, v, w, force, torque, fhyd, thyd;
   Vec3 vHalf, wHalf;                  // a particle may migrate inside a sub-step
+  Vec3 vSeen, wSeen;                  // velocity and spin the fluid step saw (implicit drag anchor)
   Vec3 fluidMomentum, fluidAngularMomentum; // of the fluid inside the particle, last fluid step
   Quaternion q;
   std::array<Vec3, 6> wallSpring{};   // tangential springs against the six walls
@@ -43,6 +44,9 @@ struct ParticleStore {
   // hydrodynamic force/torque of the current fluid step, springs and position at the last rebuild.
   std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
   std::vector<Vec3> vHalf, wHalf;   // mid-step velocities inside a DEM sub-step
+  // Velocity and spin at the start of the fluid step's DEM sub-steps, which the penalization saw:
+  // the anchor of the implicit drag (DemSolver::advance).
+  std::vector<Vec3> vSeen, wSeen;
   // Momentum and angular momentum (about the centre) of the fluid inside the particle at the last
   // fluid step: their rate of change is part of the hydrodynamic force (coupling/HydroForce).
   std::vector<Vec3> fluidMomentum, fluidAngularMomentum;
