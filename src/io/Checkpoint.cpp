@@ -16,38 +16,61 @@ namespace {
 
 const char* const kFormat = "vpsolve checkpoint";
 constexpr int kVersion = 1;
-// One row per particle; wall springs (6 x 3) follow these 35 columns.
-const char* const kParticleColumns =
-  "id,radius,density,flags,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz,fhx,fhy,fhz,thx,thy,thz,"
-  "pfx,pfy,pfz,lfx,lfy,lfz,wall_spring[6][3]";
-constexpr int kParticleCols = 35 + 18;
+// One row per particle: the kCheckpoint fields of ParticleFields.hpp, each as doubles.
+void toDoubles(double v, double*& o) { *o++ = v; }
+void toDoubles(const Vec3& v, double*& o) { *o++ = v.x, *o++ = v.y, *o++ = v.z; }
+void toDoubles(const Quaternion& q, double*& o) { *o++ = q.w, *o++ = q.x, *o++ = q.y, *o++ = q.z; }
+void toDoubles(const WallSprings& a, double*& o)
+{
+  for (const Vec3& v : a) toDoubles(v, o);
+}
+
+void fromDoubles(const double*& o, std::int64_t& v) { v = static_cast<std::int64_t>(*o++); }
+void fromDoubles(const double*& o, std::uint8_t& v) { v = static_cast<std::uint8_t>(*o++); }
+void fromDoubles(const double*& o, double& v) { v = *o++; }
+void fromDoubles(const double*& o, Vec3& v) { v.x = o[0], v.y = o[1], v.z = o[2], o += 3; }
+void fromDoubles(const double*& o, Quaternion& q) { q = Quaternion{o[0], o[1], o[2], o[3]}, o += 4; }
+void fromDoubles(const double*& o, WallSprings& a)
+{
+  for (Vec3& v : a) fromDoubles(o, v);
+}
+
+template <class F>
+void forCheckpointFields(F&& f)
+{
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char* cols, auto sync) {
+    if constexpr ((decltype(sync)::value & kCheckpoint) != 0) f(value, cols);
+  });
+}
+
+std::string particleColumns()
+{
+  std::string s;
+  forCheckpointFields([&](auto, const char* cols) { s += (s.empty() ? "" : ",") + std::string(cols); });
+  return s;
+}
+
+int particleColumnCount()
+{
+  double row[256], *o = row;
+  ParticleRecord r;
+  forCheckpointFields([&](auto value, const char*) { toDoubles(r.*value, o); });
+  return static_cast<int>(o - row);
+}
+
+const std::string kParticleColumns = particleColumns();
+const int kParticleCols = particleColumnCount();
 constexpr int kContactCols = 5;  // id, partner id, spring x, y, z
 
 void pack(const ParticleRecord& r, double* o)
 {
-  int k = 0;
-  for (double v : {double(r.id), r.radius, r.density, double(r.flags)}) o[k++] = v;
-  for (const Vec3& v : {r.x, r.v, r.w}) o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
-  for (double v : {r.q.w, r.q.x, r.q.y, r.q.z}) o[k++] = v;
-  for (const Vec3& v : {r.force, r.torque, r.fhyd, r.thyd, r.fluidMomentum, r.fluidAngularMomentum})
-    o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
-  for (const Vec3& v : r.wallSpring) o[k++] = v.x, o[k++] = v.y, o[k++] = v.z;
+  forCheckpointFields([&](auto value, const char*) { toDoubles(r.*value, o); });
 }
 
 ParticleRecord unpack(const double* o)
 {
   ParticleRecord r;
-  r.id = static_cast<std::int64_t>(o[0]);
-  r.radius = o[1];
-  r.density = o[2];
-  r.flags = static_cast<std::uint8_t>(o[3]);
-  int k = 4;
-  for (Vec3* v : {&r.x, &r.v, &r.w}) *v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
-  r.q = Quaternion{o[k], o[k + 1], o[k + 2], o[k + 3]};
-  k += 4;
-  for (Vec3* v : {&r.force, &r.torque, &r.fhyd, &r.thyd, &r.fluidMomentum, &r.fluidAngularMomentum})
-    *v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
-  for (Vec3& v : r.wallSpring) v = Vec3{o[k], o[k + 1], o[k + 2]}, k += 3;
+  forCheckpointFields([&](auto value, const char*) { fromDoubles(o, r.*value); });
   return r;
 }
 

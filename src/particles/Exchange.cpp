@@ -3,28 +3,17 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#include <type_traits>
+#include <utility>
 
 namespace vp {
 
 namespace {
 
-// What a new ghost needs (sync policy: identity and shape once, kinematics every sub-step).
-struct GhostData {
-  std::int64_t id;
-  double radius, density;
-  Vec3 x, v, w;
-  Quaternion q;
-  std::uint8_t flags;
-};
-
-struct GhostState {
-  Vec3 x, v, w;
-  Quaternion q;
-};
-
 template <class T>
 void put(std::vector<char>& b, const T& v)
 {
+  static_assert(std::is_trivially_copyable_v<T>);
   const std::size_t n = b.size();
   b.resize(n + sizeof(T));
   std::memcpy(b.data() + n, &v, sizeof(T));
@@ -39,29 +28,72 @@ T get(const char*& p)
   return v;
 }
 
-void putRecord(std::vector<char>& b, const ParticleRecord& r)
+// The contact history has a variable length: a count, then the springs.
+void put(std::vector<char>& b, const ContactHistory& h)
 {
-  put(b, r.id); put(b, r.radius); put(b, r.density); put(b, r.flags);
-  put(b, r.x); put(b, r.v); put(b, r.w); put(b, r.force); put(b, r.torque); put(b, r.fhyd); put(b, r.thyd);
-  put(b, r.vHalf); put(b, r.wHalf); put(b, r.vSeen); put(b, r.wSeen); put(b, r.fluidMomentum); put(b, r.fluidAngularMomentum);
-  put(b, r.q); put(b, r.wallSpring);
-  put(b, static_cast<std::uint32_t>(r.history.size()));
-  for (const ContactSpring& c : r.history) put(b, c);
+  put(b, static_cast<std::uint32_t>(h.size()));
+  for (const ContactSpring& c : h) put(b, c);
 }
 
-ParticleRecord getRecord(const char*& p)
+template <class T>
+void getInto(const char*& p, T& v)
 {
-  ParticleRecord r;
-  r.id = get<std::int64_t>(p); r.radius = get<double>(p); r.density = get<double>(p); r.flags = get<std::uint8_t>(p);
-  r.x = get<Vec3>(p); r.v = get<Vec3>(p); r.w = get<Vec3>(p); r.force = get<Vec3>(p); r.torque = get<Vec3>(p);
-  r.fhyd = get<Vec3>(p); r.thyd = get<Vec3>(p); r.vHalf = get<Vec3>(p); r.wHalf = get<Vec3>(p);
-  r.vSeen = get<Vec3>(p); r.wSeen = get<Vec3>(p);
-  r.fluidMomentum = get<Vec3>(p); r.fluidAngularMomentum = get<Vec3>(p); r.q = get<Quaternion>(p);
-  r.wallSpring = get<std::array<Vec3, 6>>(p);
-  const auto n = get<std::uint32_t>(p);
-  r.history.resize(n);
-  for (auto& c : r.history) c = get<ContactSpring>(p);
-  return r;
+  if constexpr (std::is_same_v<T, ContactHistory>) {
+    v.resize(get<std::uint32_t>(p));
+    for (auto& c : v) c = get<ContactSpring>(p);
+  } else {
+    v = get<T>(p);
+  }
+}
+
+// The fields of ParticleFields.hpp whose sync flags contain `Sync`, particle i of the store
+// appended to b (positions shifted by `shift`), or read from p into particle i.
+template <unsigned Sync>
+void putFields(std::vector<char>& b, const ParticleStore& s, std::size_t i, const Vec3& shift)
+{
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto sync) {
+    if constexpr ((decltype(sync)::value & Sync) != 0) {
+      if constexpr ((decltype(sync)::value & kShift) != 0)
+        put(b, (s.*field)[i] + shift);
+      else
+        put(b, (s.*field)[i]);
+    }
+  });
+}
+
+template <unsigned Sync>
+void getFields(const char*& p, ParticleStore& s, std::size_t i)
+{
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto sync) {
+    if constexpr ((decltype(sync)::value & Sync) != 0) getInto(p, (s.*field)[i]);
+  });
+}
+
+template <unsigned Sync>
+void getRecordFields(const char*& p, ParticleRecord& r)
+{
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+    if constexpr ((decltype(sync)::value & Sync) != 0) getInto(p, r.*value);
+  });
+}
+
+void putRecord(std::vector<char>& b, const ParticleRecord& r)
+{
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+    if constexpr ((decltype(sync)::value & kMigrate) != 0) put(b, r.*value);
+  });
+}
+
+// Bytes of one particle's fields with these sync flags (fixed-size fields only).
+template <unsigned Sync>
+std::size_t fieldBytes()
+{
+  std::size_t n = 0;
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+    using T = std::remove_reference_t<decltype(std::declval<ParticleRecord>().*value)>;
+    if constexpr ((decltype(sync)::value & Sync) != 0) n += sizeof(T);
+  });
+  return n;
 }
 
 int offsetOf(int k, int d) { return (d == 0 ? k % 3 : d == 1 ? (k / 3) % 3 : k / 9) - 1; }
@@ -210,7 +242,8 @@ std::size_t ParticleExchange::migrate(ParticleStore& s)
     const char* p = recvBuf_[k].data();
     const char* end = p + recvBuf_[k].size();
     while (p < end) {
-      ParticleRecord r = getRecord(p);
+      ParticleRecord r;
+      getRecordFields<kMigrate>(p, r);
       r.x = wrapped(r.x);
       if (!owns(r.x)) ++lost;
       s.append(r);
@@ -241,18 +274,16 @@ void ParticleExchange::createGhosts(ParticleStore& s)
         near = o[d] == 0 || (o[d] > 0 ? x[d] >= boxHi_[d] - halo_ : x[d] < boxLo_[d] + halo_);
       if (!near) continue;
       ghostSend_[k].push_back(i);
-      put(sendBuf_[k], GhostData{s.id[i], s.radius[i], s.density[i], x + shift_[k], s.v[i], s.w[i], s.q[i], s.flags[i]});
+      putFields<kCreate>(sendBuf_[k], s, i, shift_[k]);
     }
   }
   exchange(sendBuf_, recvBuf_, false);
-  ParticleRecord r;
   for (int k = 0; k < 27; ++k) {
     const char* p = recvBuf_[k].data();
-    ghostRecv_[k] = recvBuf_[k].size() / sizeof(GhostData);
+    ghostRecv_[k] = recvBuf_[k].size() / fieldBytes<kCreate>();
     for (std::size_t g = 0; g < ghostRecv_[k]; ++g) {
-      const GhostData gd = get<GhostData>(p);
-      r.id = gd.id; r.radius = gd.radius; r.density = gd.density; r.flags = gd.flags;
-      r.x = gd.x; r.v = gd.v; r.w = gd.w; r.q = gd.q;
+      ParticleRecord r;
+      getRecordFields<kCreate>(p, r);
       s.append(r);
     }
   }
@@ -260,24 +291,18 @@ void ParticleExchange::createGhosts(ParticleStore& s)
 
 void ParticleExchange::updateGhosts(ParticleStore& s)
 {
+  static const std::size_t bytes = fieldBytes<kStep>();
   for (int k = 0; k < 27; ++k) {
-    sendBuf_[k].resize(ghostSend_[k].size() * sizeof(GhostState));
-    char* p = sendBuf_[k].data();
-    for (std::size_t i : ghostSend_[k]) {
-      const GhostState g{s.x[i] + shift_[k], s.v[i], s.w[i], s.q[i]};
-      std::memcpy(p, &g, sizeof g);
-      p += sizeof g;
-    }
-    recvBuf_[k].resize(ghostRecv_[k] * sizeof(GhostState));
+    sendBuf_[k].clear();
+    sendBuf_[k].reserve(ghostSend_[k].size() * bytes);
+    for (std::size_t i : ghostSend_[k]) putFields<kStep>(sendBuf_[k], s, i, shift_[k]);
+    recvBuf_[k].resize(ghostRecv_[k] * bytes);
   }
   exchange(sendBuf_, recvBuf_, true);
   std::size_t g = s.nOwned;
   for (int k = 0; k < 27; ++k) {
     const char* p = recvBuf_[k].data();
-    for (std::size_t j = 0; j < ghostRecv_[k]; ++j, ++g) {
-      const GhostState st = get<GhostState>(p);
-      s.x[g] = st.x; s.v[g] = st.v; s.w[g] = st.w; s.q[g] = st.q;
-    }
+    for (std::size_t j = 0; j < ghostRecv_[k]; ++j, ++g) getFields<kStep>(p, s, g);
   }
 }
 

@@ -134,6 +134,20 @@ vp_case_run(restitution 2 --expect kinetic_energy=4.364297219e-06:1e-6 --expect 
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -grid_n 24,24,28 ${VP_SHORT})
 vp_case_run(oblique_collision 2 --expect kinetic_energy=0.0002172475689:1e-6 --expect particle_kinetic_energy=0.0006630770136:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 ${VP_SHORT})
+# The immersed dam breaks, coarse (d/dx 3) and short, on 2 ranks: outputs and stored values.
+foreach(kind loose dense)
+  set(file dam_break)
+  if(kind STREQUAL "dense")
+    set(file dam_break_dense)
+  endif()
+  set(ke_loose 2.171552691e-08 8.250822218e-09)
+  set(ke_dense 1.140052991e-08 4.037547052e-09)
+  list(GET ke_${kind} 0 fluid)
+  list(GET ke_${kind} 1 grains)
+  vp_case_run(${file} 2 --expect kinetic_energy=${fluid}:1e-6 --expect particle_kinetic_energy=${grains}:1e-6
+              -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/${file}.opts
+              -particles_file ${CMAKE_SOURCE_DIR}/cases/data/column_${kind}.csv -grid_n 192,12,60 ${VP_SHORT})
+endforeach()
 # The lubrication correction's calibration at d/dx 8 for one gap (docs/collisions.md).
 add_test(NAME calibration_normal_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_calibration.py)
 set_tests_properties(calibration_normal_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")

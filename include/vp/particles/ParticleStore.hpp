@@ -1,11 +1,7 @@
 #pragma once
 // Particle storage: struct of arrays, owned particles first ([0, nOwned)), then ghosts (copies of
 // neighbours' particles, periodic images shifted). Global ids are unique and stable.
-#include "vp/core/Vec3.hpp"
-#include "vp/interactions/ContactHistory.hpp"
-#include "vp/particles/Quaternion.hpp"
-#include <array>
-#include <cstdint>
+#include "vp/particles/ParticleFields.hpp"
 #include <vector>
 
 namespace vp {
@@ -16,43 +12,25 @@ namespace vp {
 // set by the DEM's force loop for the next kicks.
 enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };
 
-// Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition).
+// Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
+// the fields of ParticleFields.hpp.
 struct ParticleRecord {
-  std::int64_t id = 0;
-  double radius = 0, density = 0;
-  std::uint8_t flags = 0;
-  Vec3 x, v, w, force, torque, fhyd, thyd;
-  Vec3 vHalf, wHalf;                  // a particle may migrate inside a sub-step
-  Vec3 vSeen, wSeen;                  // velocity and spin the fluid step saw (implicit drag anchor)
-  Vec3 fluidMomentum, fluidAngularMomentum; // of the fluid inside the particle, last fluid step
-  Quaternion q;
-  std::array<Vec3, 6> wallSpring{};   // tangential springs against the six walls
-  ContactHistory history;             // springs against other particles
+#define VP_RECORD_MEMBER(T, m, cols, sync) T m{};
+  VP_PARTICLE_FIELDS(VP_RECORD_MEMBER)
+#undef VP_RECORD_MEMBER
 };
 
+// Owned particles first, then ghosts; one vector per field of ParticleFields.hpp (ghost entries
+// hold the kCreate/kStep fields only) and the derived ones.
 struct ParticleStore {
-  // Sent on ghost creation and to a new owner.
-  std::vector<std::int64_t> id;
-  std::vector<double> radius, density;
-  std::vector<std::uint8_t> flags;
-  // Derived from radius and density (inverse mass and moment of inertia; 0 when fixed).
+#define VP_STORE_MEMBER(T, m, cols, sync) std::vector<T> m;
+  VP_PARTICLE_FIELDS(VP_STORE_MEMBER)
+#undef VP_STORE_MEMBER
+  // Derived on append: inverse mass and moment of inertia (0 when fixed), position at the last
+  // rebuild, bit f of wallTouch: wallSpring[f] may be non-zero.
   std::vector<double> mass, invMass, invInertia;
-  // Sent every sub-step to ghosts.
-  std::vector<Vec3> x, v, w;
-  std::vector<Quaternion> q;
-  // Owned only (ghost entries unused): total force/torque of the last sub-step, the fixed
-  // hydrodynamic force/torque of the current fluid step, springs and position at the last rebuild.
-  std::vector<Vec3> force, torque, fhyd, thyd, xRebuild;
-  std::vector<Vec3> vHalf, wHalf;   // mid-step velocities inside a DEM sub-step
-  // Velocity and spin at the start of the fluid step's DEM sub-steps, which the penalization saw:
-  // the anchor of the implicit drag (DemSolver::advance).
-  std::vector<Vec3> vSeen, wSeen;
-  // Momentum and angular momentum (about the centre) of the fluid inside the particle at the last
-  // fluid step: their rate of change is part of the hydrodynamic force (coupling/HydroForce).
-  std::vector<Vec3> fluidMomentum, fluidAngularMomentum;
-  std::vector<std::array<Vec3, 6>> wallSpring;
-  std::vector<std::uint8_t> wallTouch;   // bit f: wallSpring[f] may be non-zero (derived on append)
-  std::vector<ContactHistory> history;
+  std::vector<Vec3> xRebuild;
+  std::vector<std::uint8_t> wallTouch;
 
   std::size_t nOwned = 0;
 

@@ -1,0 +1,177 @@
+// Every field of ParticleFields.hpp survives what its sync flags promise: migration to another
+// rank (kMigrate), ghost creation (kCreate) and the sub-step ghost update (kStep), and a checkpoint
+// round trip (kCheckpoint, and the contact history in its own dataset). Each field is set to
+// values unique to the particle and the field, then compared bit for bit.
+#include "../support/DemFixtures.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/io/Checkpoint.hpp"
+#include "vp/particles/Exchange.hpp"
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <string>
+#include <filesystem>
+
+using namespace vp;
+using namespace vp::test;
+
+namespace {
+
+double tag(std::int64_t id, int field, int k, int round) { return 1000.0 * id + 10.0 * field + k + 0.125 * round; }
+
+// Distinct values for particle id, field number f (round: a second set for the ghost update).
+void fill(std::int64_t&, std::int64_t, int, int) {}  // the id is the identity
+void fill(std::uint8_t& v, std::int64_t, int, int) { v = kResolvedForceOff; }
+void fill(double& v, std::int64_t id, int f, int round) { v = tag(id, f, 0, round); }
+void fill(Vec3& v, std::int64_t id, int f, int round) { v = {tag(id, f, 0, round), tag(id, f, 1, round), tag(id, f, 2, round)}; }
+void fill(Quaternion& q, std::int64_t id, int f, int round)
+{
+  q = {tag(id, f, 0, round), tag(id, f, 1, round), tag(id, f, 2, round), tag(id, f, 3, round)};
+}
+void fill(WallSprings& a, std::int64_t id, int f, int round)
+{
+  for (int k = 0; k < 6; ++k) fill(a[k], id, 10 * f + k, round);
+}
+void fill(ContactHistory& h, std::int64_t id, int f, int round)
+{
+  h = {{id + 1, {}}, {id + 2, {}}};
+  fill(h[0].spring, id, f, round);
+  fill(h[1].spring, id, f + 1, round);
+}
+
+template <class T>
+bool same(const T& a, const T& b)
+{
+  if constexpr (std::is_same_v<T, ContactHistory>) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (a[k].partner != b[k].partner || !same(a[k].spring, b[k].spring)) return false;
+    return true;
+  } else {
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+  }
+}
+
+bool keepsShape(const std::string& name)
+{
+  // Identity, shape and position are set by the test itself (they decide ownership and mass).
+  return name == "id" || name == "radius" || name == "density" || name == "x";
+}
+
+// Sets every field but id, radius, density and position; round 1 changes only the kStep fields.
+void setFields(ParticleRecord& r, int round)
+{
+  int f = 0;
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char* name, const char*, auto sync) {
+    ++f;
+    if (keepsShape(name)) return;
+    if (round == 0 || (decltype(sync)::value & kStep)) fill(r.*value, r.id, f, round);
+  });
+}
+
+// Field by field: fields with any of the `sync` bits (or named `also`) must equal `want`'s, the
+// others their default; returns the names of those that do not.
+template <unsigned Sync>
+std::string mismatches(const ParticleRecord& got, const ParticleRecord& want, const std::string& also = "")
+{
+  std::string bad;
+  const ParticleRecord blank;
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char* name, const char*, auto sync) {
+    const bool carried = (decltype(sync)::value & Sync) != 0 || name == also;
+    if (!same(got.*value, carried ? want.*value : blank.*value)) bad += std::string(" ") + name;
+  });
+  return bad;
+}
+
+ParticleRecord expected(std::int64_t id, Vec3 x, int round)
+{
+  ParticleRecord r = sphere(id, x, 0.01, 1000 + id);
+  setFields(r, 0);
+  if (round) setFields(r, 1);
+  return r;
+}
+
+} // namespace
+
+TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[mpi][fields]")
+{
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  int rank, size;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {12, 12, 12});
+  Grid grid(comm, c.grid, c.bc);
+  ParticleExchange ex(grid, 0.2);
+  // Particles spread over the box on every rank's side; each rank creates those it owns.
+  std::vector<Vec3> start, moved;
+  for (int i = 0; i < 27; ++i) {
+    const Vec3 x{0.15 + 0.35 * (i % 3), 0.15 + 0.35 * ((i / 3) % 3), 0.15 + 0.35 * (i / 9)};
+    start.push_back(x);
+    Vec3 y = x;  // 0.3 along every axis, towards the middle: most move to a neighbouring rank
+    for (int d = 0; d < 3; ++d) y[d] += x[d] < 0.5 ? 0.3 : -0.3;
+    moved.push_back(y);
+  }
+  ParticleStore s;
+  for (int i = 0; i < 27; ++i)
+    if (ex.owns(start[i])) s.append(expected(i, start[i], 0));
+  s.nOwned = s.size();
+
+  // Migration: every kMigrate field arrives; the new position too.
+  for (std::size_t i = 0; i < s.nOwned; ++i) s.x[i] = moved[s.id[i]];
+  ex.migrate(s);
+  std::string bad;
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    const std::string m = mismatches<kMigrate>(s.record(i), expected(s.id[i], moved[s.id[i]], 0));
+    if (!m.empty()) bad += " particle " + std::to_string(s.id[i]) + ":" + m;
+  }
+  INFO("after migration:" << bad);
+  CHECK(allRanks(comm, bad.empty()));
+
+  // Ghost creation carries the kCreate fields, the sub-step update the kStep fields.
+  ex.createGhosts(s);
+  std::string badGhost;
+  for (std::size_t g = s.nOwned; g < s.size(); ++g) {
+    const std::string m = mismatches<kCreate>(s.record(g), expected(s.id[g], moved[s.id[g]], 0));
+    if (!m.empty()) badGhost += " ghost " + std::to_string(s.id[g]) + ":" + m;
+  }
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    ParticleRecord r = s.record(i);
+    setFields(r, 1);
+    forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const char*, const char*, auto sync) {
+      if constexpr ((decltype(sync)::value & kStep) != 0) (s.*field)[i] = r.*value;
+    });
+  }
+  ex.updateGhosts(s);
+  for (std::size_t g = s.nOwned; g < s.size(); ++g) {
+    const std::string m = mismatches<kCreate>(s.record(g), expected(s.id[g], moved[s.id[g]], 1));
+    if (!m.empty()) badGhost += " updated ghost " + std::to_string(s.id[g]) + ":" + m;
+  }
+  long ghosts = static_cast<long>(s.size() - s.nOwned), allGhosts = 0;
+  MPI_Allreduce(&ghosts, &allGhosts, 1, MPI_LONG, MPI_SUM, comm);
+  INFO("ghosts:" << badGhost);
+  CHECK(allRanks(comm, badGhost.empty()));
+  if (size > 1) CHECK(allGhosts > 0);
+  s.dropGhosts();
+
+  // Checkpoint: every kCheckpoint field and the contact history come back, on every rank.
+  const std::string dir = "particle_fields_checkpoint";
+  if (rank == 0) std::filesystem::create_directories(dir);
+  MPI_Barrier(comm);
+  FluidState fluid{};
+  Vec* vecs[5] = {&fluid.velocity, &fluid.pressure, &fluid.convectionOld, &fluid.pressureIncrement, &fluid.velocityIncrement};
+  for (int k = 0; k < 5; ++k) VP_CALL(DMCreateGlobalVector(k % 2 ? grid.cellDM() : grid.faceDM(), vecs[k]));
+  std::vector<ParticleRecord> owned;
+  for (std::size_t i = 0; i < s.nOwned; ++i) owned.push_back(s.record(i));
+  RunState run;
+  CheckpointWriter(comm, dir, 1).write(grid, c.bc, run, fluid, owned);
+  CheckpointReader reader(comm, dir + "/checkpoint_latest.h5", c);
+  std::string badCheckpoint;
+  for (const ParticleRecord& r : reader.particles()) {
+    // The history is not a checkpoint column but has its own dataset: it must come back too.
+    const std::string m = mismatches<kCheckpoint>(r, expected(r.id, moved[r.id], 1), "history");
+    if (!m.empty()) badCheckpoint += " particle " + std::to_string(r.id) + ":" + m;
+  }
+  INFO("checkpoint:" << badCheckpoint);
+  CHECK(reader.particles().size() == 27);
+  CHECK(allRanks(comm, badCheckpoint.empty()));
+  for (int k = 0; k < 5; ++k) VecDestroy(vecs[k]);
+}
