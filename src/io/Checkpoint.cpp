@@ -17,29 +17,11 @@ namespace {
 const char* const kFormat = "vpsolve checkpoint";
 constexpr int kVersion = 1;
 // One row per particle: the kCheckpoint fields of ParticleFields.hpp, each as doubles.
-void toDoubles(double v, double*& o) { *o++ = v; }
-void toDoubles(const Vec3& v, double*& o) { *o++ = v.x, *o++ = v.y, *o++ = v.z; }
-void toDoubles(const Quaternion& q, double*& o) { *o++ = q.w, *o++ = q.x, *o++ = q.y, *o++ = q.z; }
-void toDoubles(const WallSprings& a, double*& o)
-{
-  for (const Vec3& v : a) toDoubles(v, o);
-}
-
-void fromDoubles(const double*& o, std::int64_t& v) { v = static_cast<std::int64_t>(*o++); }
-void fromDoubles(const double*& o, std::uint8_t& v) { v = static_cast<std::uint8_t>(*o++); }
-void fromDoubles(const double*& o, double& v) { v = *o++; }
-void fromDoubles(const double*& o, Vec3& v) { v.x = o[0], v.y = o[1], v.z = o[2], o += 3; }
-void fromDoubles(const double*& o, Quaternion& q) { q = Quaternion{o[0], o[1], o[2], o[3]}, o += 4; }
-void fromDoubles(const double*& o, WallSprings& a)
-{
-  for (Vec3& v : a) fromDoubles(o, v);
-}
-
 template <class F>
 void forCheckpointFields(F&& f)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char* cols, auto sync) {
-    if constexpr ((decltype(sync)::value & kCheckpoint) != 0) f(value, cols);
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo& info, auto sync) {
+    if constexpr ((decltype(sync)::value & kCheckpoint) != 0) f(value, info.columns);
   });
 }
 

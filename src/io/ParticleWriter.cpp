@@ -2,10 +2,13 @@
 #include "vp/core/Error.hpp"
 #include "vp/io/Hdf5.hpp"
 #include "vp/io/RunRecord.hpp"
+#include "vp/particles/ParticleFields.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace vp {
 
@@ -21,37 +24,33 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
   MPI_Comm_rank(comm_, &rank);
   if (rank == 0) offset = 0;
 
-  std::vector<double> radius(n), pos(3 * n), vel(3 * n), omega(3 * n), force(3 * n), orient(4 * n);
-  for (long i = 0; i < n; ++i) {
-    radius[i] = s.radius[i];
-    const Vec3 f = s.force[i] + s.fhyd[i];
-    for (int d = 0; d < 3; ++d) {
-      pos[3 * i + d] = s.x[i][d];
-      vel[3 * i + d] = s.v[i][d];
-      omega[3 * i + d] = s.w[i][d];
-      force[3 * i + d] = f[d];
-    }
-    const Quaternion& q = s.q[i];
-    orient[4 * i] = q.w;
-    orient[4 * i + 1] = q.x;
-    orient[4 * i + 2] = q.y;
-    orient[4 * i + 3] = q.z;
-  }
-
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   H5Pset_fapl_mpio(fapl, comm_, MPI_INFO_NULL);
   const std::string path = dir_ + "/" + h5::stepFile("particles", step);
   hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   H5Pclose(fapl);
   if (file < 0) throw std::runtime_error("cannot create " + path);
-  const hsize_t T = total, o = offset, m = n;
-  h5::writeRows(file, "id", H5T_NATIVE_INT64, s.id.data(), T, o, m, 1);
-  h5::writeRows(file, "radius", H5T_NATIVE_DOUBLE, radius.data(), T, o, m, 1);
-  h5::writeRows(file, "position", H5T_NATIVE_DOUBLE, pos.data(), T, o, m, 3);
-  h5::writeRows(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), T, o, m, 3);
-  h5::writeRows(file, "angular_velocity", H5T_NATIVE_DOUBLE, omega.data(), T, o, m, 3);
-  h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T, o, m, 3);
-  h5::writeRows(file, "orientation", H5T_NATIVE_DOUBLE, orient.data(), T, o, m, 4);
+  const hsize_t T_ = total, o = offset, m = n;
+  // The kSnapshot fields of ParticleFields.hpp as they are, then the total force (contact +
+  // hydrodynamic), a derived quantity.
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo& info, auto sync) {
+    if constexpr ((decltype(sync)::value & kSnapshot) != 0) {
+      using T = typename std::remove_reference_t<decltype(s.*field)>::value_type;
+      if constexpr (std::is_same_v<T, std::int64_t>) {
+        h5::writeRows(file, info.snapshot, H5T_NATIVE_INT64, (s.*field).data(), T_, o, m, 1);
+      } else {
+        const int w = doublesOf<T>();
+        std::vector<double> rows(w * n);
+        double* p = rows.data();
+        for (long i = 0; i < n; ++i) toDoubles((s.*field)[i], p);
+        h5::writeRows(file, info.snapshot, H5T_NATIVE_DOUBLE, rows.data(), T_, o, m, w);
+      }
+    }
+  });
+  std::vector<double> force(3 * n);
+  double* p = force.data();
+  for (long i = 0; i < n; ++i) toDoubles(s.force[i] + s.fhyd[i], p);
+  h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T_, o, m, 3);
   h5::writeAttribute(file, "time", &time, 1);
   h5::writeAttribute(file, "vpsolve_run", runRecord());
   H5Fclose(file);
@@ -102,14 +101,26 @@ void ParticleWriter::writeXdmf() const
         << "    <Time Value=\"" << sn.time << "\"/>\n"
         << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << N << "\"/>\n"
         << "    <Geometry GeometryType=\"XYZ\">\n";
-      item("position", (N + " 3").c_str(), "Float", 8);
+      // From the kSnapshot fields: the position is the geometry, scalars and vectors are attributes
+      // (XDMF has no quaternion type: the orientation stays in the HDF5 file).
+      forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto, const ParticleFieldInfo& info, auto sync) {
+        constexpr unsigned flags = decltype(sync)::value;
+        if constexpr ((flags & kSnapshot) != 0 && (flags & kShift) != 0) item(info.snapshot, (N + " 3").c_str(), "Float", 8);
+      });
       x << "    </Geometry>\n";
-      x << "    <Attribute Name=\"id\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-      item("id", N.c_str(), "Int", 8);
-      x << "    </Attribute>\n";
-      attribute("radius", "Scalar", 1);
-      attribute("velocity", "Vector", 3);
-      attribute("angular_velocity", "Vector", 3);
+      forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo& info, auto sync) {
+        constexpr unsigned flags = decltype(sync)::value;
+        using T = typename std::remove_reference_t<decltype(std::declval<ParticleStore>().*field)>::value_type;
+        if constexpr ((flags & kSnapshot) == 0 || (flags & kShift) != 0 || std::is_same_v<T, Quaternion>) {
+          return;
+        } else if constexpr (std::is_same_v<T, std::int64_t>) {
+          x << "    <Attribute Name=\"" << info.snapshot << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+          item(info.snapshot, N.c_str(), "Int", 8);
+          x << "    </Attribute>\n";
+        } else {
+          attribute(info.snapshot, doublesOf<T>() == 1 ? "Scalar" : "Vector", doublesOf<T>());
+        }
+      });
       attribute("force", "Vector", 3);
       x << "   </Grid>\n";
     }

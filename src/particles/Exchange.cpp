@@ -51,7 +51,7 @@ void getInto(const char*& p, T& v)
 template <unsigned Sync>
 void putFields(std::vector<char>& b, const ParticleStore& s, std::size_t i, const Vec3& shift)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto sync) {
     if constexpr ((decltype(sync)::value & Sync) != 0) {
       if constexpr ((decltype(sync)::value & kShift) != 0)
         put(b, (s.*field)[i] + shift);
@@ -64,7 +64,7 @@ void putFields(std::vector<char>& b, const ParticleStore& s, std::size_t i, cons
 template <unsigned Sync>
 void getFields(const char*& p, ParticleStore& s, std::size_t i)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto sync) {
     if constexpr ((decltype(sync)::value & Sync) != 0) getInto(p, (s.*field)[i]);
   });
 }
@@ -72,14 +72,14 @@ void getFields(const char*& p, ParticleStore& s, std::size_t i)
 template <unsigned Sync>
 void getRecordFields(const char*& p, ParticleRecord& r)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo&, auto sync) {
     if constexpr ((decltype(sync)::value & Sync) != 0) getInto(p, r.*value);
   });
 }
 
 void putRecord(std::vector<char>& b, const ParticleRecord& r)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo&, auto sync) {
     if constexpr ((decltype(sync)::value & kMigrate) != 0) put(b, r.*value);
   });
 }
@@ -89,7 +89,7 @@ template <unsigned Sync>
 std::size_t fieldBytes()
 {
   std::size_t n = 0;
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char*, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo&, auto sync) {
     using T = std::remove_reference_t<decltype(std::declval<ParticleRecord>().*value)>;
     if constexpr ((decltype(sync)::value & Sync) != 0) n += sizeof(T);
   });

@@ -5,7 +5,7 @@ namespace vp {
 
 void ParticleStore::resize(std::size_t n)
 {
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto) { (this->*field).resize(n); });
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto) { (this->*field).resize(n); });
   for (auto* v : {&mass, &invMass, &invInertia}) v->resize(n);
   xRebuild.resize(n);
   wallTouch.resize(n);
@@ -15,7 +15,7 @@ void ParticleStore::append(const ParticleRecord& r)
 {
   const std::size_t i = size();
   resize(i + 1);
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const char*, const char*, auto) { (this->*field)[i] = r.*value; });
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const ParticleFieldInfo&, auto) { (this->*field)[i] = r.*value; });
   // A fixed particle has zero inverse mass: its velocity and spin are kept, constant, a prescribed
   // motion (at rest when none is given) that the fluid and the lubrication see.
   const double m = density[i] * 4.0 / 3.0 * M_PI * radius[i] * radius[i] * radius[i];
@@ -31,7 +31,7 @@ void ParticleStore::append(const ParticleRecord& r)
 ParticleRecord ParticleStore::record(std::size_t i) const
 {
   ParticleRecord r;
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const char*, const char*, auto) { r.*value = (this->*field)[i]; });
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const ParticleFieldInfo&, auto) { r.*value = (this->*field)[i]; });
   return r;
 }
 
@@ -41,7 +41,7 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
   for (std::size_t i = 0; i < nOwned; ++i) {
     if (!keep[i]) continue;
     if (k != i) {
-      forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const char*, const char*, auto) {
+      forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto) {
         (this->*field)[k] = std::move((this->*field)[i]);
       });
       mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i];

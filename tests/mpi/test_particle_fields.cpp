@@ -1,10 +1,13 @@
 // Every field of ParticleFields.hpp survives what its sync flags promise: migration to another
 // rank (kMigrate), ghost creation (kCreate) and the sub-step ghost update (kStep), and a checkpoint
 // round trip (kCheckpoint, and the contact history in its own dataset). Each field is set to
-// values unique to the particle and the field, then compared bit for bit.
+// values unique to the particle and the field, then compared bit for bit; the snapshot datasets
+// (kSnapshot) are read back too.
 #include "../support/DemFixtures.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/io/Checkpoint.hpp"
+#include "vp/io/ParticleWriter.hpp"
+#include <hdf5.h>
 #include "vp/particles/Exchange.hpp"
 #include <catch2/catch.hpp>
 #include <cstring>
@@ -61,9 +64,9 @@ bool keepsShape(const std::string& name)
 void setFields(ParticleRecord& r, int round)
 {
   int f = 0;
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char* name, const char*, auto sync) {
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo& info, auto sync) {
     ++f;
-    if (keepsShape(name)) return;
+    if (keepsShape(info.name)) return;
     if (round == 0 || (decltype(sync)::value & kStep)) fill(r.*value, r.id, f, round);
   });
 }
@@ -75,9 +78,9 @@ std::string mismatches(const ParticleRecord& got, const ParticleRecord& want, co
 {
   std::string bad;
   const ParticleRecord blank;
-  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const char* name, const char*, auto sync) {
-    const bool carried = (decltype(sync)::value & Sync) != 0 || name == also;
-    if (!same(got.*value, carried ? want.*value : blank.*value)) bad += std::string(" ") + name;
+  forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo& info, auto sync) {
+    const bool carried = (decltype(sync)::value & Sync) != 0 || info.name == also;
+    if (!same(got.*value, carried ? want.*value : blank.*value)) bad += std::string(" ") + info.name;
   });
   return bad;
 }
@@ -136,7 +139,7 @@ TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     ParticleRecord r = s.record(i);
     setFields(r, 1);
-    forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const char*, const char*, auto sync) {
+    forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto value, const ParticleFieldInfo&, auto sync) {
       if constexpr ((decltype(sync)::value & kStep) != 0) (s.*field)[i] = r.*value;
     });
   }
@@ -173,5 +176,38 @@ TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[
   INFO("checkpoint:" << badCheckpoint);
   CHECK(reader.particles().size() == 27);
   CHECK(allRanks(comm, badCheckpoint.empty()));
+
+  // Snapshot: every kSnapshot dataset holds the field's values, row by row in the file's id order.
+  ParticleWriter(comm, dir).write(s, 1, 0.5);
+  std::string badSnapshot;
+  if (rank == 0) {
+    hid_t file = H5Fopen((dir + "/particles_000001.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    std::vector<std::int64_t> ids(27);
+    hid_t d = H5Dopen2(file, "id", H5P_DEFAULT);
+    H5Dread(d, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data());
+    H5Dclose(d);
+    forEachParticleField<ParticleStore, ParticleRecord>([&](auto, auto value, const ParticleFieldInfo& info, auto sync) {
+      if constexpr ((decltype(sync)::value & kSnapshot) != 0) {
+        using T = std::remove_reference_t<decltype(std::declval<ParticleRecord>().*value)>;
+        if constexpr (!std::is_same_v<T, std::int64_t>) {
+          const int w = doublesOf<T>();
+          std::vector<double> rows(27 * w);
+          hid_t ds = H5Dopen2(file, info.snapshot, H5P_DEFAULT);
+          H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data());
+          H5Dclose(ds);
+          for (int i = 0; i < 27; ++i) {
+            std::vector<double> want(w);
+            double* o = want.data();
+            toDoubles(expected(ids[i], moved[ids[i]], 1).*value, o);
+            if (std::memcmp(want.data(), &rows[i * w], w * sizeof(double)) != 0)
+              badSnapshot += " " + std::string(info.snapshot) + "[" + std::to_string(ids[i]) + "]";
+          }
+        }
+      }
+    });
+    H5Fclose(file);
+  }
+  INFO("snapshot:" << badSnapshot);
+  CHECK(allRanks(comm, badSnapshot.empty()));
   for (int k = 0; k < 5; ++k) VecDestroy(vecs[k]);
 }

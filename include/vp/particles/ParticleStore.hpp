@@ -15,7 +15,7 @@ enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
 struct ParticleRecord {
-#define VP_RECORD_MEMBER(T, m, cols, sync) T m{};
+#define VP_RECORD_MEMBER(T, m, cols, snap, sync) T m{};
   VP_PARTICLE_FIELDS(VP_RECORD_MEMBER)
 #undef VP_RECORD_MEMBER
 };
@@ -23,7 +23,7 @@ struct ParticleRecord {
 // Owned particles first, then ghosts; one vector per field of ParticleFields.hpp (ghost entries
 // hold the kCreate/kStep fields only) and the derived ones.
 struct ParticleStore {
-#define VP_STORE_MEMBER(T, m, cols, sync) std::vector<T> m;
+#define VP_STORE_MEMBER(T, m, cols, snap, sync) std::vector<T> m;
   VP_PARTICLE_FIELDS(VP_STORE_MEMBER)
 #undef VP_STORE_MEMBER
   // Derived on append: inverse mass and moment of inertia (0 when fixed), position at the last
