@@ -108,7 +108,8 @@ void ParticleConfig::validate() const
   auto positive = [](double v, const char* opt) {
     if (!(v > 0) || !std::isfinite(v)) failOption(opt, "must be > 0, got " + formatNumber(v));
   };
-  if (!(implicitDrag >= 0 && implicitDrag <= 10)) failOption("-dem_implicit_drag", "must be in [0, 10]", implicitDrag);
+  // Up to the hindered-settling resistance of dense packings (tens of times Stokes).
+  if (!(implicitDrag >= 0 && implicitDrag <= 100)) failOption("-dem_implicit_drag", "must be in [0, 100]", implicitDrag);
   int sources = !file.empty() + lattice.set + random.set + single.set;
   if (sources > 1) failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particle_position");
   positive(radius, "-particle_radius");

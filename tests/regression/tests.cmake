@@ -254,4 +254,4 @@ vp_bad_input(dem_drag_negative 1 "option -dem_drag_viscosity: must be >= 0 \\(Pa
 # Implicit drag of the coupling (-dem_implicit_drag): a spinning sphere decays without reversing at a fluid step of 0.7 relaxation times.
 add_test(NAME coupling_spin_down COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spin_down.sh $<TARGET_FILE:vpsolve>)
 set_tests_properties(coupling_spin_down PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
-vp_bad_input(dem_implicit_drag_range 1 "option -dem_implicit_drag: must be in \\[0, 10\\], got -1" -dem_implicit_drag -1)
+vp_bad_input(dem_implicit_drag_range 1 "option -dem_implicit_drag: must be in \\[0, 100\\], got -1" -dem_implicit_drag -1)
