@@ -11,12 +11,20 @@ namespace vp {
 namespace {
 
 template <class T>
-void put(std::vector<char>& b, const T& v)
+void write(char*& p, const T& v)
 {
   static_assert(std::is_trivially_copyable_v<T>);
+  std::memcpy(p, &v, sizeof(T));
+  p += sizeof(T);
+}
+
+template <class T>
+void put(std::vector<char>& b, const T& v)
+{
   const std::size_t n = b.size();
   b.resize(n + sizeof(T));
-  std::memcpy(b.data() + n, &v, sizeof(T));
+  char* p = b.data() + n;
+  write(p, v);
 }
 
 template <class T>
@@ -46,17 +54,17 @@ void getInto(const char*& p, T& v)
   }
 }
 
-// The fields of ParticleFields.hpp whose sync flags contain `Sync`, particle i of the store
-// appended to b (positions shifted by `shift`), or read from p into particle i.
+// The fixed-size fields of ParticleFields.hpp whose sync flags contain `Sync`: particle i of the
+// store written at p, which the caller has sized (positions shifted by `shift`), or read from p.
 template <unsigned Sync>
-void putFields(std::vector<char>& b, const ParticleStore& s, std::size_t i, const Vec3& shift)
+void putFields(char*& p, const ParticleStore& s, std::size_t i, const Vec3& shift)
 {
   forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto sync) {
     if constexpr ((decltype(sync)::value & Sync) != 0) {
       if constexpr ((decltype(sync)::value & kShift) != 0)
-        put(b, (s.*field)[i] + shift);
+        write(p, (s.*field)[i] + shift);
       else
-        put(b, (s.*field)[i]);
+        write(p, (s.*field)[i]);
     }
   });
 }
@@ -260,6 +268,7 @@ std::size_t ParticleExchange::migrate(ParticleStore& s)
 
 void ParticleExchange::createGhosts(ParticleStore& s)
 {
+  static const std::size_t bytes = fieldBytes<kCreate>();
   s.dropGhosts();
   for (int k = 0; k < 27; ++k) {
     ghostSend_[k].clear();
@@ -274,13 +283,16 @@ void ParticleExchange::createGhosts(ParticleStore& s)
         near = o[d] == 0 || (o[d] > 0 ? x[d] >= boxHi_[d] - halo_ : x[d] < boxLo_[d] + halo_);
       if (!near) continue;
       ghostSend_[k].push_back(i);
-      putFields<kCreate>(sendBuf_[k], s, i, shift_[k]);
+      const std::size_t at = sendBuf_[k].size();
+      sendBuf_[k].resize(at + bytes);
+      char* p = sendBuf_[k].data() + at;
+      putFields<kCreate>(p, s, i, shift_[k]);
     }
   }
   exchange(sendBuf_, recvBuf_, false);
   for (int k = 0; k < 27; ++k) {
     const char* p = recvBuf_[k].data();
-    ghostRecv_[k] = recvBuf_[k].size() / fieldBytes<kCreate>();
+    ghostRecv_[k] = recvBuf_[k].size() / bytes;
     for (std::size_t g = 0; g < ghostRecv_[k]; ++g) {
       ParticleRecord r;
       getRecordFields<kCreate>(p, r);
@@ -293,9 +305,9 @@ void ParticleExchange::updateGhosts(ParticleStore& s)
 {
   static const std::size_t bytes = fieldBytes<kStep>();
   for (int k = 0; k < 27; ++k) {
-    sendBuf_[k].clear();
-    sendBuf_[k].reserve(ghostSend_[k].size() * bytes);
-    for (std::size_t i : ghostSend_[k]) putFields<kStep>(sendBuf_[k], s, i, shift_[k]);
+    sendBuf_[k].resize(ghostSend_[k].size() * bytes);
+    char* p = sendBuf_[k].data();
+    for (std::size_t i : ghostSend_[k]) putFields<kStep>(p, s, i, shift_[k]);
     recvBuf_[k].resize(ghostRecv_[k] * bytes);
   }
   exchange(sendBuf_, recvBuf_, true);
