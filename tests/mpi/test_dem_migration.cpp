@@ -55,8 +55,11 @@ TEST_CASE("Random walk with periodic wrap: no particle lost or duplicated", "[mp
     ids = all[i].id == static_cast<std::int64_t>(i);
     positions = positions && ids && all[i].x.x == expected[i].x && all[i].x.y == expected[i].y && all[i].x.z == expected[i].z;
   }
+  int size;
+  MPI_Comm_size(comm, &size);
   INFO("migrations " << total << ", particles " << all.size());
-  CHECK(total >= 10000);
+  // One rank wraps its particles in place: nothing is sent.
+  CHECK(total >= (size > 1 ? 10000 : 0));
   CHECK(allRanks(comm, inBox));
   CHECK(ids);
   CHECK(positions);

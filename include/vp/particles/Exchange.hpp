@@ -1,18 +1,19 @@
 #pragma once
-// Parallel ownership of particles (docs/particles.md, parallel decomposition): the rank whose cell-DMDA box contains a
-// particle's centre owns it. migrate() hands particles that left the box to the neighbour (with
-// their contact history); createGhosts() sends copies of particles within the halo to the 26
-// neighbours (periodic images shifted); updateGhosts() refreshes the ghosts' x, v, omega, q.
+// Parallel ownership of particles (docs/particles.md, parallel decomposition): the rank whose
+// cell-DMDA box contains a particle's centre owns it. migrate() hands particles that left the box
+// to their new owner (with their contact history); createGhosts() sends a copy of each particle to
+// every subdomain whose box, widened by the halo, contains the particle or one of its periodic
+// images (shifted copies; on a short periodic axis a rank holds images of its own particles), over
+// any number of subdomains; updateGhosts() refreshes the ghosts' sub-step fields.
 #include "vp/grid/Grid.hpp"
 #include "vp/particles/ParticleStore.hpp"
-#include <array>
 #include <vector>
 
 namespace vp {
 
 class ParticleExchange {
 public:
-  // Throws InputError (on every rank) when a subdomain is thinner than the halo.
+  // Throws InputError (on every rank) when a periodic length is shorter than the halo.
   ParticleExchange(const Grid& grid, double halo);
 
   double halo() const { return halo_; }
@@ -35,21 +36,30 @@ public:
   void reduceToOwners(const ParticleStore& s, std::vector<double>& values, int width);
 
 private:
-  using Buffers = std::array<std::vector<char>, 27>;
-  // Sends send[k] to the neighbour in direction k; recv[k] gets what the opposite neighbour sent
-  // in direction k. knownSizes: recv[k] already has the right size.
-  void exchange(const Buffers& send, Buffers& recv, bool knownSizes);
-  int direction(const Vec3& x, int* offsets) const;
+  // A particle at x is sent to the peer as x + shift when lo <= x < hi on every axis.
+  struct Link {
+    Vec3 lo, hi, shift;
+  };
+  struct Peer {
+    int rank;
+    PetscInt start[3], end[3];  // its cell box
+    std::vector<Link> links;    // one per periodic shift under which the boxes meet
+    std::vector<std::size_t> sendIndex;  // owned particles sent as ghosts, link by link
+    std::vector<Vec3> sendShift;
+    std::size_t recvCount = 0;  // ghosts received (stored in peer order after the owned ones)
+    std::vector<char> sendBuf, recvBuf;
+  };
+  void findPeers();
+  bool inBox(const Vec3& x, const PetscInt* start, const PetscInt* end) const;
+  // Sends every peer its sendBuf and fills recvBuf with what it sent (already sized if knownSizes).
+  void exchange(bool knownSizes);
 
   const Grid& grid_;
   MPI_Comm comm_;
   double halo_;
+  PetscInt start_[3], end_[3];
   double boxLo_[3], boxHi_[3], length_[3];
-  int neighbour_[27];
-  Vec3 shift_[27];
-  std::array<std::vector<std::size_t>, 27> ghostSend_;  // owned indices sent as ghosts, per direction
-  std::array<std::size_t, 27> ghostRecv_{};             // ghosts received per direction
-  Buffers sendBuf_, recvBuf_;
+  std::vector<Peer> peers_;
 };
 
 } // namespace vp
