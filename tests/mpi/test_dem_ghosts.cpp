@@ -12,28 +12,29 @@
 using namespace vp;
 using namespace vp::test;
 
-TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][ghosts]")
+namespace {
+
+// n spheres of radius [rmin, 2 rmin) at random in a box with periodic x and z and walls in y; pairs
+// closer than a_i + a_j + extra; halo 4 rmin + extra.
+void checkGhostPairs(const Vec3& L, std::array<int, 3> cells, int n, double rmin, double extra, long minPairs)
 {
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  // Periodic in x and z, walls in y.
-  Config c = boxConfig({0, 0, 0}, {1, 0.8, 0.6}, {10, 8, 6}, true);
+  Config c = boxConfig({0, 0, 0}, L, cells, true);
   c.bc.type[2] = c.bc.type[3] = BcType::Wall;
   Grid grid(comm, c.grid, c.bc);
-  const double extra = 0.01, halo = 2 * 0.02 + extra;
+  const double halo = 4 * rmin + extra;
   ParticleExchange ex(grid, halo);
-  const int n = 3000;
   std::mt19937_64 rng(11);
   auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
   std::vector<ParticleRecord> all(n);
   ParticleStore s;
   for (int i = 0; i < n; ++i) {
-    all[i] = sphere(i, {u(), 0.8 * u(), 0.6 * u()}, 0.01 + 0.01 * u(), 1000);
+    all[i] = sphere(i, {L[0] * u(), L[1] * u(), L[2] * u()}, rmin + rmin * u(), 1000);
     if (ex.owns(all[i].x)) s.append(all[i]);
   }
   s.nOwned = s.size();
   ex.createGhosts(s);
 
-  const double L[3] = {1, 0.8, 0.6};
   const bool periodic[3] = {true, false, true};
   auto near = [&](const ParticleRecord& a, const ParticleRecord& b) {
     Vec3 d = a.x - b.x;
@@ -74,7 +75,7 @@ TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][ghosts]"
 
   auto [mismatches, pairs] = checkPairs();
   INFO("partner entries " << pairs);
-  REQUIRE(pairs > 1000);
+  REQUIRE(pairs > minPairs);
   CHECK(mismatches == 0);
 
   // Move every particle a little (less than the halo margin) and refresh the ghosts only.
@@ -91,4 +92,18 @@ TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][ghosts]"
       exact = exact && (periodic[k] ? std::fabs(d - L[k] * std::round(d / L[k])) < 1e-12 : d == 0);
     }
   CHECK(allRanks(comm, exact));
+}
+
+} // namespace
+
+TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][ghosts]")
+{
+  checkGhostPairs({1, 0.8, 0.6}, {10, 8, 6}, 3000, 0.01, 0.01, 1000);
+}
+
+TEST_CASE("Ghosts across several subdomains: a periodic box two halos wide", "[mpi][ghosts]")
+{
+  // Halo 0.4 in a 0.8 x 0.8 x 0.8 box of 8 cells a side: on 2-4 ranks a subdomain is 0.2-0.4 wide,
+  // so ghosts cross more than one of them, and every rank holds images of its own spheres.
+  checkGhostPairs({0.8, 0.8, 0.8}, {8, 8, 8}, 150, 0.09, 0.04, 200);
 }

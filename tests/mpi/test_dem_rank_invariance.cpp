@@ -4,6 +4,7 @@
 #include "../support/DemFixtures.hpp"
 #include "vp/particles/Generators.hpp"
 #include <catch2/catch.hpp>
+#include <random>
 
 using namespace vp;
 using namespace vp::test;
@@ -72,5 +73,38 @@ TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[m
   double maxSpeed = 0;
   for (const State& s : serial) maxSpeed = std::max(maxSpeed, norm(s.v));
   CHECK(maxSpeed > 0.01);  // the column is collapsing
+  CHECK(bitwiseEqual(parallel, serial));
+}
+
+TEST_CASE("A periodic box two halos wide: colliding spheres bitwise identical to one rank", "[mpi][ghosts]")
+{
+  // Twelve spheres of radius 0.06-0.08 in a fully periodic 0.4 m box: the halo (2 a_max + skin,
+  // 0.176 m) is wider than a subdomain on 3 or 4 ranks and nearly half the box, so ghosts travel
+  // over more than one subdomain and a rank holds images of its own spheres.
+  Config c = boxConfig({0, 0, 0}, {0.4, 0.4, 0.4}, {8, 8, 8}, true);
+  ParticleConfig pc = contactConfig(0.01, 0.8, 0.3);
+  std::mt19937_64 rng(5);
+  auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  std::vector<ParticleRecord> p;
+  while (p.size() < 12) {
+    const Vec3 x{0.4 * u(), 0.4 * u(), 0.4 * u()};
+    const double a = 0.06 + 0.02 * u();
+    bool free = true;
+    for (const ParticleRecord& q : p) {
+      Vec3 d = x - q.x;
+      for (int k = 0; k < 3; ++k) d[k] -= 0.4 * std::round(d[k] / 0.4);
+      free = free && norm(d) > a + q.radius;
+    }
+    if (free)
+      p.push_back(sphere(static_cast<std::int64_t>(p.size()), x, a, 2000, {4 * u() - 2, 4 * u() - 2, 4 * u() - 2}));
+  }
+  const double dt = 0.01 / 50;
+  const std::vector<State> parallel = run(PETSC_COMM_WORLD, c, pc, p, dt, 1500);
+  const std::vector<State> serial = run(PETSC_COMM_SELF, c, pc, p, dt, 1500);
+  REQUIRE(parallel.size() == p.size());
+  // Collisions happened: the speeds changed.
+  double change = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) change = std::max(change, norm(serial[i].v - p[i].v));
+  CHECK(change > 0.5);
   CHECK(bitwiseEqual(parallel, serial));
 }
