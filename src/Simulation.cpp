@@ -294,7 +294,7 @@ int Simulation::run()
                     loopStart, false);
     }
     wallLastStep_ = MPI_Wtime() - t0;
-    record();
+    if (step_ % cfg_.output.seriesEvery == 0) record();
     const StepVerdict v = guard_.check(dt, fluid_->stats(), dem_.get(), MPI_Wtime() - wallStart_, wallLastStep_);
     if (!v.problem.empty()) stopOnFailure(v.problem, loopStart, true);
     if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
@@ -314,6 +314,7 @@ int Simulation::run()
     }
   }
   loopWall_ = MPI_Wtime() - loopStart;
+  if (recordedStep_ != step_ && step_ > firstStep_) record();  // the time series end with the final state
   if (snapshots_.lastStep() != step_) output();  // always the final state
   const bool early = status != 0 || stop == "reached -time_wall_limit";
   if ((checkpointSchedule_.on() || early) && checkpointSchedule_.lastStep() != step_) checkpoint();
@@ -325,6 +326,7 @@ int Simulation::run()
 void Simulation::stopOnFailure(const std::string& problem, double loopStart, bool snapshot)
 {
   snapshot = snapshot && snapshots_.lastStep() != step_;
+  if (snapshot && recordedStep_ != step_) record();  // the row of the step that failed a check
   if (snapshot) output();  // the completed step that failed a check, for inspection
   loopWall_ = MPI_Wtime() - loopStart;
   finish("failed: " + problem);
@@ -334,6 +336,7 @@ void Simulation::stopOnFailure(const std::string& problem, double loopStart, boo
 
 void Simulation::record()
 {
+  recordedStep_ = step_;
   if (tracker_) tracker_->record(dem_->particles(), time_);
   if (probes_) probes_->record(time_, fluid_->pressure());
   if (diagnostics_)

@@ -88,6 +88,7 @@ private:
   double time_ = 0;
   int step_ = 0;
   int firstStep_ = 0;       // step and time this run started from (0 unless restarted)
+  int recordedStep_ = -1;   // last step written to the time series (-series_every)
   double firstTime_ = 0;
   long particlesAtStart_ = 0;
   StepStats last_;

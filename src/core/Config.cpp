@@ -76,6 +76,8 @@ Config Config::read()
     c.output.every = o.integer("-output_every", c.output.every, "Steps between field snapshots (0: none)");
     c.output.dt = o.real("-output_dt", c.output.dt, "Simulated time between field snapshots (s; 0: none)");
     c.output.monitorEvery = o.integer("-monitor_every", c.output.monitorEvery, "Steps between progress lines (0: none)");
+    c.output.seriesEvery = o.integer("-series_every", c.output.seriesEvery,
+                                     "Steps between rows of diagnostics.csv, probes.csv and particle_<id>.csv (the last step always)");
     c.output.overwrite = o.flag("-output_overwrite", false, "Replace the outputs of another run found in -output_dir");
     const std::vector<double> probes = o.realList("-probe", "Pressure probes x,y,z[,x,y,z...] (m): probes.csv, one row per step");
     if (probes.size() % 3 && !optionsHelpMode()) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
@@ -131,6 +133,7 @@ void Config::validate() const
   if (output.every < 0) failOption("-output_every", "must be >= 0 (0: no snapshots), got " + std::to_string(output.every));
   if (!(output.dt >= 0)) failOption("-output_dt", "must be >= 0 (0: no snapshots), got " + formatNumber(output.dt));
   if (output.monitorEvery < 0) failOption("-monitor_every", "must be >= 0, got " + std::to_string(output.monitorEvery));
+  if (output.seriesEvery < 1) failOption("-series_every", "must be >= 1, got " + std::to_string(output.seriesEvery));
   if (output.dir.empty()) failOption("-output_dir", "must not be empty");
   for (std::size_t p = 0; p < output.probes.size(); ++p)
     for (int d = 0; d < 3; ++d)

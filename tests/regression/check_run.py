@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Runs a vpsolve case and checks its outputs against the output contract (docs/outputs.md) and
 stored reference values.
-usage: check_run.py --np N --dir OUT [--expect column=value:reltol ...] -- vpsolve args..."""
+usage: check_run.py --np N --dir OUT [--expect column=value:reltol ...] [--steps S,S,...] -- vpsolve args...
+--steps: the steps of the diagnostics.csv rows, exactly."""
 import argparse, csv, glob, os, shutil, subprocess, sys
 import xml.etree.ElementTree as ET
 import h5py
@@ -47,6 +48,7 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--dir", required=True)
     ap.add_argument("--expect", action="append", default=[])
+    ap.add_argument("--steps")
     ap.add_argument("cmd", nargs=argparse.REMAINDER)
     a = ap.parse_args()
     cmd = a.cmd[1:] if a.cmd and a.cmd[0] == "--" else a.cmd
@@ -61,6 +63,10 @@ def main():
     if list(rows[0].keys())[:len(CONTRACT)] != CONTRACT:
         fail("diagnostics.csv header %s" % list(rows[0].keys()))
     last = rows[-1]
+    if a.steps is not None:
+        steps = [int(r["step"]) for r in rows]
+        if steps != [int(x) for x in a.steps.split(",")]:
+            fail("diagnostics.csv rows at steps %s, expected %s" % (steps, a.steps))
     n = check_fields(a.dir)
     for e in a.expect:
         col, rest = e.split("=")

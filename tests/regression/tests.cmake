@@ -87,7 +87,13 @@ vp_bad_input(particles_short_periodic 1 "option -grid_hi: the periodic length al
              -options_file ${VP_DEM_DATA}/box.opts -bc_xlo periodic -bc_xhi periodic -grid_n 2,4,4
              -grid_hi 0.002,0.04,0.04 -particle_position 0.001,0.02,0.02 -particle_radius 0.001)
 
-# The dry collapse case, shortened, on 2 ranks: it runs and writes the contracted outputs.
+# Time-series rows every -series_every steps and at the last step.
+vp_case_run(series_every 2 --steps 10,20,25 -- $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
+            -particles_file ${VP_DEM_DATA}/good.csv -time_max_steps 25 -series_every 10)
+vp_bad_input(series_every 1 "option -series_every: must be >= 1, got 0" -series_every 0)
+
+# The dry collapse case, shortened, on 2 ranks: it runs and writes the contracted outputs (a
+# time-series row every 100 steps: 10 rows, plus the initial one for the tracked particle).
 add_test(NAME dem_case_granular_collapse_dry
          COMMAND sh -c "rm -rf dem_collapse && ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --oversubscribe \
                  $<TARGET_FILE:vpsolve> -options_file ${PROJECT_SOURCE_DIR}/cases/granular_collapse_dry.opts \
@@ -95,8 +101,8 @@ add_test(NAME dem_case_granular_collapse_dry
                  -output_dt 0 -output_every 500 -output_dir dem_collapse \
                  && test -f dem_collapse/particles_000000.h5 && test -f dem_collapse/particles_001000.h5 \
                  && grep -q particles_001000.h5 dem_collapse/particles.xmf \
-                 && test $(wc -l < dem_collapse/diagnostics.csv) -eq 1001 \
-                 && test $(wc -l < dem_collapse/particle_1000.csv) -eq 1002")
+                 && test $(wc -l < dem_collapse/diagnostics.csv) -eq 11 \
+                 && test $(wc -l < dem_collapse/particle_1000.csv) -eq 12")
 set_tests_properties(dem_case_granular_collapse_dry PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
 
 # Lubrication in DEM-only runs: no grid to tie the gaps to, so they must be given.

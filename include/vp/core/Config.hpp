@@ -53,6 +53,7 @@ struct OutputConfig {
   int every = 0;                           // steps between snapshots (0: none)
   double dt = 0;                           // simulated time between snapshots (0: none)
   int monitorEvery = 10;                   // steps between progress lines (0: none)
+  int seriesEvery = 1;                     // steps between rows of the time series (and the last step)
   bool files = true;                       // false: no files at all (library use in tests)
   bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
   std::vector<Vec3> probes;                // -probe x,y,z,...: pressure probes (probes.csv) [m]
