@@ -412,6 +412,11 @@ void Simulation::finish(const std::string& stopReason)
                 "%.4g particle-steps/s, %zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
                 d.particles, particlesAtStart_, steps, particleCfg_.substeps, loopWall_, particleSteps / loopWall_, dem_->rebuilds(),
                 d.kineticEnergy);
+    // Particle traffic between ranks (migration, ghosts, ghost updates, hydrodynamic partial sums).
+    double traffic[2] = {double(dem_->exchange().messagesSent()), dem_->exchange().bytesSent()};
+    MPI_Allreduce(MPI_IN_PLACE, traffic, 2, MPI_DOUBLE, MPI_SUM, comm);
+    PetscPrintf(comm, "vpsolve: particle exchange between ranks: %.0f messages, %.4g MB (all ranks)\n", traffic[0],
+                traffic[1] / 1e6);
   }
   // Stage timings: the slowest rank's seconds per stage.
   std::string stages;

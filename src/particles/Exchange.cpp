@@ -135,6 +135,7 @@ void ParticleExchange::findPeers()
   int size, me;
   MPI_Comm_size(comm_, &size);
   MPI_Comm_rank(comm_, &me);
+  rank_ = me;
   const PetscInt mine[6] = {start_[0], start_[1], start_[2], end_[0], end_[1], end_[2]};
   std::vector<PetscInt> all(6 * static_cast<std::size_t>(size));
   MPI_Allgather(mine, 6, MPIU_INT, all.data(), 6, MPIU_INT, comm_);
@@ -211,6 +212,7 @@ void ParticleExchange::exchange(bool knownSizes)
       sendSize[k] = peers_[k].sendBuf.size();
       req.emplace_back();
       MPI_Isend(&sendSize[k], 1, MPI_UNSIGNED_LONG, peers_[k].rank, 0, comm_, &req.back());
+      count(peers_[k].rank, sizeof(unsigned long));
     }
     MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
     req.clear();
@@ -225,6 +227,7 @@ void ParticleExchange::exchange(bool knownSizes)
     if (p.sendBuf.empty()) continue;
     req.emplace_back();
     MPI_Isend(p.sendBuf.data(), static_cast<int>(p.sendBuf.size()), MPI_BYTE, p.rank, 1, comm_, &req.back());
+    count(p.rank, p.sendBuf.size());
   }
   MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
 }

@@ -35,6 +35,10 @@ public:
   // to the particle it copies and added to its owner's entry (hydrodynamic partial sums).
   void reduceToOwners(const ParticleStore& s, std::vector<double>& values, int width);
 
+  // Messages this rank has sent (sizes included, self-messages excluded) and their bytes.
+  long messagesSent() const { return messages_; }
+  double bytesSent() const { return bytes_; }
+
 private:
   // A particle at x is sent to the peer as x + shift when lo <= x < hi on every axis.
   struct Link {
@@ -53,6 +57,12 @@ private:
   bool inBox(const Vec3& x, const PetscInt* start, const PetscInt* end) const;
   // Sends every peer its sendBuf and fills recvBuf with what it sent (already sized if knownSizes).
   void exchange(bool knownSizes);
+  void count(int to, std::size_t bytes)
+  {
+    if (to == rank_) return;  // a self-image: no traffic between ranks
+    ++messages_;
+    bytes_ += static_cast<double>(bytes);
+  }
 
   const Grid& grid_;
   MPI_Comm comm_;
@@ -60,6 +70,9 @@ private:
   PetscInt start_[3], end_[3];
   double boxLo_[3], boxHi_[3], length_[3];
   std::vector<Peer> peers_;
+  int rank_ = 0;
+  long messages_ = 0;
+  double bytes_ = 0;
 };
 
 } // namespace vp
