@@ -24,7 +24,8 @@ const char* const kUsage =
 
 const char* const kSolverNote =
   "\nPETSc options of the solver objects take the prefixes -pressure_ and -velocity_ (for example\n"
-  "-pressure_ksp_monitor, -velocity_ksp_converged_reason); docs/fluid.md lists the useful ones.\n";
+  "-pressure_ksp_monitor; the viscous KSP monitors need -velocity_operator shell); docs/fluid.md lists\n"
+  "the useful ones.\n";
 
 bool isRank0()
 {

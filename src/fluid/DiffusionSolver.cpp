@@ -4,13 +4,17 @@
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace vp {
 
 DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : grid_(grid), bc_(bc)
 {
-  assembled_ = readSolverOptions().assembledViscous;
+  const ViscousOperator op = readSolverOptions().viscousOperator;
+  assembled_ = op == ViscousOperator::Assembled;
+  fused_ = op == ViscousOperator::Fused;
   setOptionDefault("-velocity_ksp_type", "cg");
   setOptionDefault("-velocity_pc_type", "jacobi");
   setOptionDefault("-velocity_ksp_norm_type", "unpreconditioned");
@@ -54,12 +58,25 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
   VP_CALL(KSPSetOptionsPrefix(ksp_, "velocity_"));
   VP_CALL(KSPSetFromOptions(ksp_));
   VP_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
+  if (fused_) {
+    // The fused solver is CG + Jacobi; the KSP only holds the tolerances then.
+    KSPType kt;
+    PCType pt;
+    PC pc;
+    VP_CALL(KSPGetType(ksp_, &kt));
+    VP_CALL(KSPGetPC(ksp_, &pc));
+    VP_CALL(PCGetType(pc, &pt));
+    if (std::string(kt) != KSPCG || std::string(pt) != PCJACOBI)
+      throw InputError(std::string("option -velocity_operator: fused is CG + Jacobi; for -velocity_ksp_type ") + kt +
+                       " -velocity_pc_type " + pt + " choose -velocity_operator shell (or assembled)");
+    for (Vec* v : {&r_, &p_, &q_, &dinv_}) VP_CALL(DMCreateGlobalVector(f, v));
+  }
 }
 
 DiffusionSolver::~DiffusionSolver()
 {
   KSPDestroy(&ksp_);
-  for (Vec* v : {&S_, &SdiagL_, &rhs_, &diag_, &xL_}) VecDestroy(v);
+  for (Vec* v : {&S_, &SdiagL_, &rhs_, &diag_, &xL_, &r_, &p_, &q_, &dinv_}) VecDestroy(v);
   MatDestroy(&shell_);
   MatDestroy(&A_);
   MatDestroy(&SL_);
@@ -134,32 +151,29 @@ void DiffusionSolver::assemble()
 // y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
 // 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
 // row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
-PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
+double DiffusionSolver::apply(Vec x, Vec y, bool dot)
 {
-  DiffusionSolver* self;
-  PetscFunctionBeginUser;
-  PetscCall(MatShellGetContext(A, &self));
-  const Grid& g = self->grid_;
+  const Grid& g = grid_;
   DM f = g.faceSolveDM();
-  PetscCall(DMGlobalToLocal(f, x, INSERT_VALUES, self->xL_));
+  VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
   {
-    FaceArray xa(f, self->xL_);
-    fillFaceGhosts(g, self->bc_, xa.a, true);
+    FaceArray xa(f, xL_);
+    fillFaceGhosts(g, bc_, xa.a, true);
   }
   PetscInt gs[3], gm[3];
-  PetscCall(DMDAGetGhostCorners(f, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  VP_CALL(DMDAGetGhostCorners(f, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
   const PetscScalar *xl, *xg, *s, *th = nullptr;
   PetscScalar* ya;
-  PetscCall(VecGetArrayRead(self->xL_, &xl));
-  PetscCall(VecGetArrayRead(x, &xg));  // the ghost fill zeroes the fixed faces in xL
-  PetscCall(VecGetArrayRead(self->S_, &s));
-  if (self->theta_) PetscCall(VecGetArrayRead(self->theta_, &th));
-  PetscCall(VecGetArray(y, &ya));
-  const double a = self->a_;
-  const double wx = a / (g.h(0) * g.h(0)), wy = a / (g.h(1) * g.h(1)), wz = a / (g.h(2) * g.h(2));
+  VP_CALL(VecGetArrayRead(xL_, &xl));
+  VP_CALL(VecGetArrayRead(x, &xg));  // the ghost fill zeroes the fixed faces in xL
+  VP_CALL(VecGetArrayRead(S_, &s));
+  if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
+  VP_CALL(VecGetArray(y, &ya));
+  const double wx = a_ / (g.h(0) * g.h(0)), wy = a_ / (g.h(1) * g.h(1)), wz = a_ / (g.h(2) * g.h(2));
   const double wc = 1 + 2 * (wx + wy + wz);
   const PetscInt sx = 3, sy = 3 * gm[0], sz = 3 * gm[0] * gm[1];
   const PetscInt row = 3 * (g.end(0) - g.start(0));
+  double xy = 0;
   PetscInt o = 0;  // owned (global-vector) offset of the row
   for (PetscInt k = g.start(2); k < g.end(2); ++k)
     for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
@@ -185,12 +199,28 @@ PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
         for (PetscInt n = 1; n < row; n += 3) fixedRow(n);
       if (k == 0 && g.atLow(2))
         for (PetscInt n = 2; n < row; n += 3) fixedRow(n);
+      if (dot) {  // the row is still in cache
+        const PetscScalar* __restrict xo = xg + o;
+        double sum = 0;
+#pragma omp simd reduction(+ : sum)
+        for (PetscInt n = 0; n < row; ++n) sum += xo[n] * yr[n];
+        xy += sum;
+      }
     }
-  PetscCall(VecRestoreArray(y, &ya));
-  if (th) PetscCall(VecRestoreArrayRead(self->theta_, &th));
-  PetscCall(VecRestoreArrayRead(self->S_, &s));
-  PetscCall(VecRestoreArrayRead(x, &xg));
-  PetscCall(VecRestoreArrayRead(self->xL_, &xl));
+  VP_CALL(VecRestoreArray(y, &ya));
+  if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
+  VP_CALL(VecRestoreArrayRead(S_, &s));
+  VP_CALL(VecRestoreArrayRead(x, &xg));
+  VP_CALL(VecRestoreArrayRead(xL_, &xl));
+  return xy;
+}
+
+PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
+{
+  DiffusionSolver* self;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &self));
+  self->apply(x, y, false);
   PetscFunctionReturn(0);
 }
 
@@ -221,6 +251,10 @@ void DiffusionSolver::setOperator(double a, Vec theta)
       VP_CALL(VecAXPY(diag_, 1.0, rhs_));
     }
     VP_CALL(MatDiagonalSet(A_, diag_, ADD_VALUES));
+  } else if (fused_) {
+    VP_CALL(diagonal(shell_, dinv_));
+    VP_CALL(VecReciprocal(dinv_));
+    return;
   } else {
     // A new state, so that the preconditioner rebuilds its diagonal.
     VP_CALL(MatAssemblyBegin(shell_, MAT_FINAL_ASSEMBLY));
@@ -235,6 +269,7 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
   if (a != a_ || theta || theta_) setOperator(a, theta);
   VP_CALL(VecPointwiseMult(rhs_, S_, r));
   if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol, PETSC_DEFAULT, PETSC_DEFAULT));
+  if (fused_) return fusedSolve(rhs_, du, atol);
   VP_CALL(KSPSolve(ksp_, rhs_, du));
   KSPConvergedReason reason;
   VP_CALL(KSPGetConvergedReason(ksp_, &reason));
@@ -244,6 +279,132 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
   PetscInt its;
   VP_CALL(KSPGetIterationNumber(ksp_, &its));
   return static_cast<int>(its);
+}
+
+// The vector passes of the fused CG (restrict: the arrays never alias; simd reductions: the dot
+// products vectorise, summed in a fixed order for a given build).
+namespace {
+
+void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
+                     const PetscScalar* __restrict dinv, PetscScalar* __restrict r, PetscScalar* __restrict p,
+                     double sums[3])
+{
+  double rz = 0, rr = 0, bb = 0;
+#pragma omp simd reduction(+ : rz, rr, bb)
+  for (PetscInt i = 0; i < n; ++i) {
+    r[i] = b[i] - ax[i];
+    p[i] = dinv[i] * r[i];
+    rz += r[i] * p[i];
+    rr += r[i] * r[i];
+    bb += b[i] * b[i];
+  }
+  sums[0] = rz;
+  sums[1] = rr;
+  sums[2] = bb;
+}
+
+void update(PetscInt n, double alpha, const PetscScalar* __restrict p, const PetscScalar* __restrict ap,
+            const PetscScalar* __restrict dinv, PetscScalar* __restrict x, PetscScalar* __restrict r, double sums[2])
+{
+  double rz = 0, rr = 0;
+#pragma omp simd reduction(+ : rz, rr)
+  for (PetscInt i = 0; i < n; ++i) {
+    x[i] += alpha * p[i];
+    r[i] -= alpha * ap[i];
+    rz += r[i] * dinv[i] * r[i];
+    rr += r[i] * r[i];
+  }
+  sums[0] = rz;
+  sums[1] = rr;
+}
+
+void newDirection(PetscInt n, double beta, const PetscScalar* __restrict r, const PetscScalar* __restrict dinv,
+                  PetscScalar* __restrict p)
+{
+#pragma omp simd
+  for (PetscInt i = 0; i < n; ++i) p[i] = dinv[i] * r[i] + beta * p[i];
+}
+
+} // namespace
+
+int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
+{
+  PetscReal rtol, abstol, dtol;
+  PetscInt maxIts;
+  VP_CALL(KSPGetTolerances(ksp_, &rtol, &abstol, &dtol, &maxIts));
+  if (!userAtol_) abstol = atol;
+  PetscInt n;
+  VP_CALL(VecGetLocalSize(x, &n));
+  const MPI_Comm comm = grid_.comm();
+  auto fail = [](const std::string& why) {
+    throw StepFailure("velocity (diffusion) solve did not converge: " + why + " (see -velocity_operator shell -velocity_ksp_monitor)");
+  };
+  // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b.
+  apply(x, q_, false);
+  double sums[3] = {0, 0, 0};
+  {
+    const PetscScalar *bb, *qq, *dd;
+    PetscScalar *rr, *pp;
+    VP_CALL(VecGetArrayRead(b, &bb));
+    VP_CALL(VecGetArrayRead(q_, &qq));
+    VP_CALL(VecGetArrayRead(dinv_, &dd));
+    VP_CALL(VecGetArray(r_, &rr));
+    VP_CALL(VecGetArray(p_, &pp));
+    initialResidual(n, bb, qq, dd, rr, pp, sums);
+    VP_CALL(VecRestoreArray(p_, &pp));
+    VP_CALL(VecRestoreArray(r_, &rr));
+    VP_CALL(VecRestoreArrayRead(dinv_, &dd));
+    VP_CALL(VecRestoreArrayRead(q_, &qq));
+    VP_CALL(VecRestoreArrayRead(b, &bb));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
+  double rz = sums[0];
+  // PETSc's default test on the unpreconditioned residual: ||r|| <= max(rtol ||b||, atol).
+  const double tol = std::max(rtol * std::sqrt(sums[2]), static_cast<double>(abstol));
+  if (std::sqrt(sums[1]) <= tol) return 0;
+  for (PetscInt it = 1; it <= maxIts; ++it) {
+    double pq = apply(p_, q_, true);
+    MPI_Allreduce(MPI_IN_PLACE, &pq, 1, MPI_DOUBLE, MPI_SUM, comm);
+    if (!(pq > 0)) fail("the operator is not positive definite (p.Ap = " + std::to_string(pq) + ")");
+    const double alpha = rz / pq;
+    // x += alpha p; r -= alpha q; sums r.D^-1 r and r.r.
+    double s2[2] = {0, 0};
+    {
+      const PetscScalar *pp, *qq, *dd;
+      PetscScalar *xx, *rr;
+      VP_CALL(VecGetArrayRead(p_, &pp));
+      VP_CALL(VecGetArrayRead(q_, &qq));
+      VP_CALL(VecGetArrayRead(dinv_, &dd));
+      VP_CALL(VecGetArray(x, &xx));
+      VP_CALL(VecGetArray(r_, &rr));
+      update(n, alpha, pp, qq, dd, xx, rr, s2);
+      VP_CALL(VecRestoreArray(r_, &rr));
+      VP_CALL(VecRestoreArray(x, &xx));
+      VP_CALL(VecRestoreArrayRead(dinv_, &dd));
+      VP_CALL(VecRestoreArrayRead(q_, &qq));
+      VP_CALL(VecRestoreArrayRead(p_, &pp));
+    }
+    MPI_Allreduce(MPI_IN_PLACE, s2, 2, MPI_DOUBLE, MPI_SUM, comm);
+    const double rnorm = std::sqrt(s2[1]);
+    if (!std::isfinite(rnorm)) fail("the residual is not finite");
+    if (rnorm <= tol) return static_cast<int>(it);
+    // p = D^-1 r + beta p.
+    const double beta = s2[0] / rz;
+    rz = s2[0];
+    {
+      const PetscScalar *rr, *dd;
+      PetscScalar* pp;
+      VP_CALL(VecGetArrayRead(r_, &rr));
+      VP_CALL(VecGetArrayRead(dinv_, &dd));
+      VP_CALL(VecGetArray(p_, &pp));
+      newDirection(n, beta, rr, dd, pp);
+      VP_CALL(VecRestoreArray(p_, &pp));
+      VP_CALL(VecRestoreArrayRead(dinv_, &dd));
+      VP_CALL(VecRestoreArrayRead(r_, &rr));
+    }
+  }
+  fail("no convergence in " + std::to_string(maxIts) + " iterations (-velocity_ksp_max_it)");
+  return -1;
 }
 
 } // namespace vp

@@ -11,9 +11,11 @@ SolverOptions readSolverOptions()
                                                       "solve on the uniform grid), pfmg, mg, or another PETSc PC");
   s.pressureKsp = o.text("-pressure_ksp_type", "", "Pressure Krylov method (default cg; preonly with fft)");
   o.real("-pressure_ksp_rtol", 1e-6, "Pressure relative tolerance (measured choice, docs/fluid.md)");
-  s.assembledViscous = o.choice("-velocity_operator", {"shell", "assembled"}, 0,
-                                "Viscous operator: shell (matrix-free sweep, CG + Jacobi) or assembled (AIJ, for "
-                                "preconditioners that need a matrix: hypre, gamg)") == 1;
+  s.viscousOperator = static_cast<ViscousOperator>(
+      o.choice("-velocity_operator", {"fused", "shell", "assembled"}, 0,
+               "Viscous operator and solver: fused (matrix-free sweep in a hand-fused CG + Jacobi, fastest), shell "
+               "(the same operator under PETSc's KSP: any -velocity_ksp/pc option that needs only products and the "
+               "diagonal, monitors) or assembled (AIJ, for preconditioners that need a matrix: hypre, gamg)"));
   o.real("-velocity_ksp_rtol", 1e-6, "Viscous relative tolerance (measured choice, docs/fluid.md)");
   return s;
 }

@@ -181,7 +181,7 @@ endfunction()
 # written on 2 ranks and continued on 3.
 vp_restart(dem_collapse 2 --restart-np 3 --steps 400 --at 200 --tol 0
            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/granular_collapse_dry.opts
-           -particles_file ${PROJECT_SOURCE_DIR}/cases/data/column_2000.csv)
+           -particles_file ${PROJECT_SOURCE_DIR}/cases/data/column_2000.csv -series_every 1)
 # The coupled falling sphere: bitwise on the same rank count; on another to the solver tolerance.
 set(VP_FALL_COARSE $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24)
 vp_restart(falling_sphere 2 --restart-np 2 --steps 20 --at 10 --tol 0 -- ${VP_FALL_COARSE})

@@ -5,10 +5,14 @@
 // extrapolation makes L non-symmetric, but S L is symmetric for the diagonal weights
 // S = (3/4)^(number of no-slip walls the face is next to), so the solver works on
 // (S (1 + theta) - a S L) du = S r, symmetric positive definite (KSP prefix -velocity_).
-// The operator is matrix-free by default (-velocity_operator shell: one fused stencil sweep per
-// product, CG + Jacobi); -velocity_operator assembled builds the AIJ matrix for preconditioners
-// that need one (hypre, gamg), useful when nu dt / h^2 is large (docs/fluid.md, solver table).
+// The operator is matrix-free by default (one stencil sweep per product) and solved by a
+// hand-fused CG + Jacobi (-velocity_operator fused: the product carries the dot product p.Ap, one
+// pass updates x and r and forms both residual dot products, one pass the search direction; PETSc's
+// CG makes seven vector passes per iteration). -velocity_operator shell gives the same operator to
+// PETSc's KSP (other Krylov methods, monitors); -velocity_operator assembled builds the AIJ matrix
+// for preconditioners that need one (hypre, gamg), useful when nu dt / h^2 is large (docs/fluid.md).
 #include "vp/core/Config.hpp"
+#include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Grid.hpp"
 #include <petscksp.h>
 
@@ -30,6 +34,7 @@ public:
   void setOperator(double a, Vec theta);
   Vec weights() const { return S_; }  // S
   bool assembled() const { return assembled_; }
+  bool fused() const { return fused_; }
 
   // One face's row of S L: weight S, diagonal and the coefficients to the -1 / +1 neighbours.
   struct Row {
@@ -42,13 +47,18 @@ private:
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
+  // y = A x; returns this rank's part of x.y when `dot` is set.
+  double apply(Vec x, Vec y, bool dot);
+  // CG + Jacobi on A du = b with PETSc's default convergence test on the unpreconditioned residual.
+  int fusedSolve(Vec b, Vec du, double atol);
 
   const Grid& grid_;
   const BoundaryConfig bc_;
-  bool assembled_ = false;
+  bool assembled_ = false, fused_ = false;
   Mat SL_ = nullptr, A_ = nullptr, shell_ = nullptr;
   Vec S_ = nullptr, SdiagL_ = nullptr, rhs_ = nullptr, diag_ = nullptr, xL_ = nullptr;
   Vec theta_ = nullptr;
+  Vec r_ = nullptr, p_ = nullptr, q_ = nullptr, dinv_ = nullptr;  // fused CG: residual, direction, A p, 1/diag
   KSP ksp_ = nullptr;
   double a_ = -1;
   bool userAtol_ = false;

@@ -5,10 +5,12 @@
 
 namespace vp {
 
+enum class ViscousOperator { Fused, Shell, Assembled };
+
 struct SolverOptions {
   std::string pressurePc;        // -pressure_pc_type: hypre (BoomerAMG), fft, pfmg, mg or another PETSc PC
   std::string pressureKsp;       // -pressure_ksp_type ("" : cg, or preonly with fft)
-  bool assembledViscous = false; // -velocity_operator assembled
+  ViscousOperator viscousOperator = ViscousOperator::Fused;  // -velocity_operator
 };
 
 SolverOptions readSolverOptions();
