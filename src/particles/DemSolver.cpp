@@ -309,7 +309,8 @@ void DemSolver::substep(double dt)
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
   }
   // A loop of its own: independent rotations pipeline better than inside the kick.
-  for (std::size_t i = 0; i < s.nOwned; ++i) s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
+  if (pc_.orientation)
+    for (std::size_t i = 0; i < s.nOwned; ++i) s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
   if (needRebuild())
     rebuild();
   else

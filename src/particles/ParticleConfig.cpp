@@ -90,6 +90,10 @@ ParticleConfig ParticleConfig::read()
                             "torque follow the particle's own velocity change within a fluid step, implicit in the sub-steps: "
                             "keeps the coupling stable when the fluid step exceeds the particle's viscous relaxation time "
                             "(spin: rho_p d^2 / (60 mu)); 0: held fixed (docs/coupling.md)");
+    c.orientation = o.flag("-dem_orientation", c.orientation,
+                           "Integrate each sphere's orientation (the quaternion of snapshots and checkpoints); false: "
+                           "orientations keep their initial values (no force on a sphere depends on them; about a tenth "
+                           "of a dry DEM step)");
   }
   {
     OptionGroup o("DEM-only liquid");

@@ -78,3 +78,26 @@ TEST_CASE("Kinetic energy of a damped granular gas never increases", "[dem]")
   CHECK(previous < 0.5 * initial);  // many collisions happened
   CHECK(increases == 0);
 }
+
+TEST_CASE("A free spinning sphere turns its orientation by omega t; -dem_orientation false keeps it", "[dem]")
+{
+  Config c = boxConfig({0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4});
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  const Vec3 w{3, -4, 12};  // |w| = 13 rad/s about a fixed axis (no torque)
+  for (const bool integrate : {true, false}) {
+    ParticleConfig pc = contactConfig(1e-3, 0.8, 0.4);
+    pc.orientation = integrate;
+    DemSolver dem(grid, c, pc, {sphere(0, {0.05, 0.05, 0.05}, 0.005, 2500, {}, w)});
+    const int steps = 1000;
+    const double dt = 1e-4;
+    for (int k = 0; k < steps; ++k) dem.advance(k * dt, dt);
+    const Quaternion q = dem.particles().q[0];
+    // Exact: rotation by |w| t = 1.3 rad about w / |w|, from the identity.
+    const double half = 0.5 * 13 * steps * dt, s = std::sin(half) / 13;
+    const Quaternion expect = integrate ? Quaternion{std::cos(half), s * w.x, s * w.y, s * w.z} : Quaternion{};
+    CHECK(std::fabs(q.w - expect.w) < 1e-12);
+    CHECK(std::fabs(q.x - expect.x) < 1e-12);
+    CHECK(std::fabs(q.y - expect.y) < 1e-12);
+    CHECK(std::fabs(q.z - expect.z) < 1e-12);
+  }
+}

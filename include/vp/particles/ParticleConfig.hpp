@@ -52,6 +52,7 @@ struct ParticleConfig {
   double skin = 0.1;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
   double dragViscosity = 0;   // -dem_drag_viscosity: Stokes drag of a still liquid, DEM-only runs
   double implicitDrag = 1;    // -dem_implicit_drag: fraction of the Stokes resistance made implicit
+  bool orientation = true;    // -dem_orientation: integrate the orientation quaternions
   bool trackAll = false;      // -track_particles all
   std::vector<std::int64_t> track; // -track_particles id,id,...
 
