@@ -29,11 +29,13 @@ for N in $sizes; do
     t_lmp=$(printf '%s\n' "$lmp_out" | awk '/^Loop time of/ {print $4}')
     rm -rf "vp_${N}_P$P"
     # Same law: kn for both contact types, damping for e = 0.9 per contact mass, kt = 2/7 kn,
-    # gamma_t = gamma_n / 2, mu = 0.25. Cells only set the decomposition (split along y).
+    # gamma_t = gamma_n / 2, mu = 0.25. Cells only set the decomposition (split along y). Same work
+    # besides: a diagnostics row every 1000 steps (LAMMPS's thermo), no orientation (nve/sphere).
     vp_out=$(mpirun -np "$P" "$root/build/vpsolve" -fluid_off -grid_lo 0,0,0 -grid_hi 0.15,"$W",0.04 -grid_n 4,"$ny",4 \
              -gravity 0,0,-9.81 -particles_file "column_$N.csv" -contact_kn 200 -contact_restitution 0.9 \
              -contact_friction 0.25 -contact_kt_ratio 0.285714286 -contact_damping_t_ratio 0.5 -time_dt $dt \
-             -time_max_steps "$STEPS" -time_final 1 -output_every "$STEPS" -monitor_every 0 -output_dir "vp_${N}_P$P")
+             -time_max_steps "$STEPS" -time_final 1 -output_every "$STEPS" -monitor_every 0 -output_dir "vp_${N}_P$P" \
+             -series_every 1000 -dem_orientation false)
     t_vp=$(printf '%s\n' "$vp_out" | sed -n 's/.*loop time \([0-9.e+-]*\) s.*/\1/p')
     snap=$(printf "vp_%s_P%s/particles_%06d.h5" "$N" "$P" "$STEPS")
     "$root/build/benchmarks/bench_dem" "$snap" "$STEPS" > "collapse_vp_${N}_P$P.dump"
