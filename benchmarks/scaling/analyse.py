@@ -56,7 +56,7 @@ with open(f"{here}/results.csv", "w", newline="") as f:
 with open(f"{here}/scaling.md", "w") as f:
     for case, title in (("coupled", "Coupled step, 128^3, 1,000 spheres"), ("dem", "Dry DEM collapse, 2,000 spheres")):
         f.write(f"\n{title} ({cores} cores; rows marked * oversubscribed: timings not speed-ups)\n\n")
-        f.write("| ranks | s/step | speed-up | efficiency | KE vs 1 rank | PETSc msgs/step | reductions/step | particle msgs/step | particle kB/step | slowest stages (ms/step) |\n")
+        f.write("| ranks | s/step | speed-up | efficiency | KE vs 1 rank | PETSc msgs/step (all ranks) | reductions/step (per rank) | particle msgs/step (all ranks) | particle kB/step (all ranks) | slowest stages (ms/step) |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|\n")
         for r in (r for r in rows if r["case"] == case):
             top = sorted(((r[s.lower() + "_s"], s) for s in STAGES if s != "IO"), reverse=True)[:3]  # IO: the final snapshot
