@@ -4,6 +4,7 @@
 #include "vp/RunConfig.hpp"
 #include "vp/Simulation.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/HugePages.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/io/OutputDir.hpp"
 #include "vp/io/RunRecord.hpp"
@@ -94,6 +95,7 @@ int main(int argc, char** argv)
   if (!optionsFilesReadable(argc, argv)) return 1;
   vp::setCommandLine(argc, argv);
   const bool help = takeHelp(argc, argv);
+  vp::allocateLargeOnHugePages();
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 1;
   int rc = 0;
   try {
