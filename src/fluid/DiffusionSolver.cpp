@@ -285,6 +285,33 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 // products vectorise, summed in a fixed order for a given build).
 namespace {
 
+// A vector's local values for the length of a scope (VecGetArray / VecGetArrayRead).
+class Values {
+public:
+  explicit Values(Vec v) : v_(v) { VP_CALL(VecGetArray(v, &a_)); }
+  ~Values() { VecRestoreArray(v_, &a_); }
+  Values(const Values&) = delete;
+  Values& operator=(const Values&) = delete;
+  operator PetscScalar*() const { return a_; }
+
+private:
+  Vec v_;
+  PetscScalar* a_;
+};
+
+class ReadValues {
+public:
+  explicit ReadValues(Vec v) : v_(v) { VP_CALL(VecGetArrayRead(v, &a_)); }
+  ~ReadValues() { VecRestoreArrayRead(v_, &a_); }
+  ReadValues(const ReadValues&) = delete;
+  ReadValues& operator=(const ReadValues&) = delete;
+  operator const PetscScalar*() const { return a_; }
+
+private:
+  Vec v_;
+  const PetscScalar* a_;
+};
+
 void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
                      const PetscScalar* __restrict dinv, PetscScalar* __restrict r, PetscScalar* __restrict p,
                      double sums[3])
@@ -342,21 +369,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
   // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b.
   apply(x, q_, false);
   double sums[3] = {0, 0, 0};
-  {
-    const PetscScalar *bb, *qq, *dd;
-    PetscScalar *rr, *pp;
-    VP_CALL(VecGetArrayRead(b, &bb));
-    VP_CALL(VecGetArrayRead(q_, &qq));
-    VP_CALL(VecGetArrayRead(dinv_, &dd));
-    VP_CALL(VecGetArray(r_, &rr));
-    VP_CALL(VecGetArray(p_, &pp));
-    initialResidual(n, bb, qq, dd, rr, pp, sums);
-    VP_CALL(VecRestoreArray(p_, &pp));
-    VP_CALL(VecRestoreArray(r_, &rr));
-    VP_CALL(VecRestoreArrayRead(dinv_, &dd));
-    VP_CALL(VecRestoreArrayRead(q_, &qq));
-    VP_CALL(VecRestoreArrayRead(b, &bb));
-  }
+  initialResidual(n, ReadValues(b), ReadValues(q_), ReadValues(dinv_), Values(r_), Values(p_), sums);
   MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
   double rz = sums[0];
   // PETSc's default test on the unpreconditioned residual: ||r|| <= max(rtol ||b||, atol).
@@ -369,21 +382,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     const double alpha = rz / pq;
     // x += alpha p; r -= alpha q; sums r.D^-1 r and r.r.
     double s2[2] = {0, 0};
-    {
-      const PetscScalar *pp, *qq, *dd;
-      PetscScalar *xx, *rr;
-      VP_CALL(VecGetArrayRead(p_, &pp));
-      VP_CALL(VecGetArrayRead(q_, &qq));
-      VP_CALL(VecGetArrayRead(dinv_, &dd));
-      VP_CALL(VecGetArray(x, &xx));
-      VP_CALL(VecGetArray(r_, &rr));
-      update(n, alpha, pp, qq, dd, xx, rr, s2);
-      VP_CALL(VecRestoreArray(r_, &rr));
-      VP_CALL(VecRestoreArray(x, &xx));
-      VP_CALL(VecRestoreArrayRead(dinv_, &dd));
-      VP_CALL(VecRestoreArrayRead(q_, &qq));
-      VP_CALL(VecRestoreArrayRead(p_, &pp));
-    }
+    update(n, alpha, ReadValues(p_), ReadValues(q_), ReadValues(dinv_), Values(x), Values(r_), s2);
     MPI_Allreduce(MPI_IN_PLACE, s2, 2, MPI_DOUBLE, MPI_SUM, comm);
     const double rnorm = std::sqrt(s2[1]);
     if (!std::isfinite(rnorm)) fail("the residual is not finite");
@@ -391,17 +390,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     // p = D^-1 r + beta p.
     const double beta = s2[0] / rz;
     rz = s2[0];
-    {
-      const PetscScalar *rr, *dd;
-      PetscScalar* pp;
-      VP_CALL(VecGetArrayRead(r_, &rr));
-      VP_CALL(VecGetArrayRead(dinv_, &dd));
-      VP_CALL(VecGetArray(p_, &pp));
-      newDirection(n, beta, rr, dd, pp);
-      VP_CALL(VecRestoreArray(p_, &pp));
-      VP_CALL(VecRestoreArrayRead(dinv_, &dd));
-      VP_CALL(VecRestoreArrayRead(r_, &rr));
-    }
+    newDirection(n, beta, ReadValues(r_), ReadValues(dinv_), Values(p_));
   }
   fail("no convergence in " + std::to_string(maxIts) + " iterations (-velocity_ksp_max_it)");
   return -1;

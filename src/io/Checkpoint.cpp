@@ -36,7 +36,7 @@ int particleColumnCount()
 {
   double row[256], *o = row;
   ParticleRecord r;
-  forCheckpointFields([&](auto value, const char*) { toDoubles(r.*value, o); });
+  forCheckpointFields([&](auto value, const char*) { writeDoubles(r.*value, o); });
   return static_cast<int>(o - row);
 }
 
@@ -46,13 +46,13 @@ constexpr int kContactCols = 5;  // id, partner id, spring x, y, z
 
 void pack(const ParticleRecord& r, double* o)
 {
-  forCheckpointFields([&](auto value, const char*) { toDoubles(r.*value, o); });
+  forCheckpointFields([&](auto value, const char*) { writeDoubles(r.*value, o); });
 }
 
 ParticleRecord unpack(const double* o)
 {
   ParticleRecord r;
-  forCheckpointFields([&](auto value, const char*) { fromDoubles(o, r.*value); });
+  forCheckpointFields([&](auto value, const char*) { readDoubles(o, r.*value); });
   return r;
 }
 

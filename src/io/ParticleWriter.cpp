@@ -42,14 +42,14 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
         const int w = doublesOf<T>();
         std::vector<double> rows(w * n);
         double* p = rows.data();
-        for (long i = 0; i < n; ++i) toDoubles((s.*field)[i], p);
+        for (long i = 0; i < n; ++i) writeDoubles((s.*field)[i], p);
         h5::writeRows(file, info.snapshot, H5T_NATIVE_DOUBLE, rows.data(), T_, o, m, w);
       }
     }
   });
   std::vector<double> force(3 * n);
   double* p = force.data();
-  for (long i = 0; i < n; ++i) toDoubles(s.force[i] + s.fhyd[i], p);
+  for (long i = 0; i < n; ++i) writeDoubles(s.force[i] + s.fhyd[i], p);
   h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T_, o, m, 3);
   h5::writeAttribute(file, "time", &time, 1);
   h5::writeAttribute(file, "vpsolve_run", runRecord());

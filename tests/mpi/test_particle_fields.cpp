@@ -198,7 +198,7 @@ TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[
           for (int i = 0; i < 27; ++i) {
             std::vector<double> want(w);
             double* o = want.data();
-            toDoubles(expected(ids[i], moved[ids[i]], 1).*value, o);
+            writeDoubles(expected(ids[i], moved[ids[i]], 1).*value, o);
             if (std::memcmp(want.data(), &rows[i * w], w * sizeof(double)) != 0)
               badSnapshot += " " + std::string(info.snapshot) + "[" + std::to_string(ids[i]) + "]";
           }

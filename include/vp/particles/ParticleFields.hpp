@@ -59,30 +59,30 @@ struct ParticleFieldInfo {
   /* springs against other particles (variable length: their own checkpoint dataset) */                               \
   X(ContactHistory, history, "", "", kMigrate)
 
-// A field as doubles (checkpoint rows, snapshot datasets): toDoubles writes and advances o,
-// fromDoubles reads and advances o.
-inline void toDoubles(double v, double*& o) { *o++ = v; }
-inline void toDoubles(const Vec3& v, double*& o) { *o++ = v.x, *o++ = v.y, *o++ = v.z; }
-inline void toDoubles(const Quaternion& q, double*& o) { *o++ = q.w, *o++ = q.x, *o++ = q.y, *o++ = q.z; }
-inline void toDoubles(const WallSprings& a, double*& o)
+// A field as doubles (checkpoint rows, snapshot datasets): writeDoubles writes and advances o,
+// readDoubles reads and advances o.
+inline void writeDoubles(double v, double*& o) { *o++ = v; }
+inline void writeDoubles(const Vec3& v, double*& o) { *o++ = v.x, *o++ = v.y, *o++ = v.z; }
+inline void writeDoubles(const Quaternion& q, double*& o) { *o++ = q.w, *o++ = q.x, *o++ = q.y, *o++ = q.z; }
+inline void writeDoubles(const WallSprings& a, double*& o)
 {
-  for (const Vec3& v : a) toDoubles(v, o);
+  for (const Vec3& v : a) writeDoubles(v, o);
 }
-inline void fromDoubles(const double*& o, std::int64_t& v) { v = static_cast<std::int64_t>(*o++); }
-inline void fromDoubles(const double*& o, std::uint8_t& v) { v = static_cast<std::uint8_t>(*o++); }
-inline void fromDoubles(const double*& o, double& v) { v = *o++; }
-inline void fromDoubles(const double*& o, Vec3& v) { v.x = o[0], v.y = o[1], v.z = o[2], o += 3; }
-inline void fromDoubles(const double*& o, Quaternion& q) { q = Quaternion{o[0], o[1], o[2], o[3]}, o += 4; }
-inline void fromDoubles(const double*& o, WallSprings& a)
+inline void readDoubles(const double*& o, std::int64_t& v) { v = static_cast<std::int64_t>(*o++); }
+inline void readDoubles(const double*& o, std::uint8_t& v) { v = static_cast<std::uint8_t>(*o++); }
+inline void readDoubles(const double*& o, double& v) { v = *o++; }
+inline void readDoubles(const double*& o, Vec3& v) { v.x = o[0], v.y = o[1], v.z = o[2], o += 3; }
+inline void readDoubles(const double*& o, Quaternion& q) { q = Quaternion{o[0], o[1], o[2], o[3]}, o += 4; }
+inline void readDoubles(const double*& o, WallSprings& a)
 {
-  for (Vec3& v : a) fromDoubles(o, v);
+  for (Vec3& v : a) readDoubles(o, v);
 }
 // Doubles per value of a field type.
 template <class T>
 int doublesOf()
 {
   double row[32], *o = row;
-  toDoubles(T{}, o);
+  writeDoubles(T{}, o);
   return static_cast<int>(o - row);
 }
 
