@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace vp {
 
@@ -285,32 +286,36 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 // products vectorise, summed in a fixed order for a given build).
 namespace {
 
-// A vector's local values for the length of a scope (VecGetArray / VecGetArrayRead).
+// A vector's local values for the length of a scope (VecGetArrayRead if Read, else VecGetArray).
+template <bool Read>
 class Values {
+  using Pointer = std::conditional_t<Read, const PetscScalar*, PetscScalar*>;
+
 public:
-  explicit Values(Vec v) : v_(v) { VP_CALL(VecGetArray(v, &a_)); }
-  ~Values() { VecRestoreArray(v_, &a_); }
+  explicit Values(Vec v) : v_(v)
+  {
+    if constexpr (Read)
+      VP_CALL(VecGetArrayRead(v, &a_));
+    else
+      VP_CALL(VecGetArray(v, &a_));
+  }
+  ~Values()
+  {
+    if constexpr (Read)
+      VecRestoreArrayRead(v_, &a_);
+    else
+      VecRestoreArray(v_, &a_);
+  }
   Values(const Values&) = delete;
   Values& operator=(const Values&) = delete;
-  operator PetscScalar*() const { return a_; }
+  operator Pointer() const { return a_; }
 
 private:
   Vec v_;
-  PetscScalar* a_;
+  Pointer a_;
 };
-
-class ReadValues {
-public:
-  explicit ReadValues(Vec v) : v_(v) { VP_CALL(VecGetArrayRead(v, &a_)); }
-  ~ReadValues() { VecRestoreArrayRead(v_, &a_); }
-  ReadValues(const ReadValues&) = delete;
-  ReadValues& operator=(const ReadValues&) = delete;
-  operator const PetscScalar*() const { return a_; }
-
-private:
-  Vec v_;
-  const PetscScalar* a_;
-};
+using ReadValues = Values<true>;
+using WriteValues = Values<false>;
 
 void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
                      const PetscScalar* __restrict dinv, PetscScalar* __restrict r, PetscScalar* __restrict p,
@@ -369,7 +374,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
   // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b.
   apply(x, q_, false);
   double sums[3] = {0, 0, 0};
-  initialResidual(n, ReadValues(b), ReadValues(q_), ReadValues(dinv_), Values(r_), Values(p_), sums);
+  initialResidual(n, ReadValues(b), ReadValues(q_), ReadValues(dinv_), WriteValues(r_), WriteValues(p_), sums);
   MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
   double rz = sums[0];
   // PETSc's default test on the unpreconditioned residual: ||r|| <= max(rtol ||b||, atol).
@@ -382,7 +387,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     const double alpha = rz / pq;
     // x += alpha p; r -= alpha q; sums r.D^-1 r and r.r.
     double s2[2] = {0, 0};
-    update(n, alpha, ReadValues(p_), ReadValues(q_), ReadValues(dinv_), Values(x), Values(r_), s2);
+    update(n, alpha, ReadValues(p_), ReadValues(q_), ReadValues(dinv_), WriteValues(x), WriteValues(r_), s2);
     MPI_Allreduce(MPI_IN_PLACE, s2, 2, MPI_DOUBLE, MPI_SUM, comm);
     const double rnorm = std::sqrt(s2[1]);
     if (!std::isfinite(rnorm)) fail("the residual is not finite");
@@ -390,7 +395,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     // p = D^-1 r + beta p.
     const double beta = s2[0] / rz;
     rz = s2[0];
-    newDirection(n, beta, ReadValues(r_), ReadValues(dinv_), Values(p_));
+    newDirection(n, beta, ReadValues(r_), ReadValues(dinv_), WriteValues(p_));
   }
   fail("no convergence in " + std::to_string(maxIts) + " iterations (-velocity_ksp_max_it)");
   return -1;
