@@ -14,7 +14,9 @@ PenalizationConfig PenalizationConfig::read()
   PenalizationConfig c;
   OptionGroup o("Volume penalization of the particles");
   c.mask = static_cast<Mask>(o.choice("-penalization_mask", {"smooth", "sharp"}, 0, "Mask of a sphere on the faces"));
-  c.lambda = o.real("-penalization_lambda", c.lambda, "Penalization coefficient lambda (1/s); 0: 400 nu / h^2");
+  c.lambda = o.real("-penalization_lambda", c.lambda,
+                    "Penalization coefficient lambda (1/s); 0: max(400 nu / h^2, 20 / dt), a penetration length of at most h/20 "
+                    "and the fluid inside a particle following it to 5 % within every step");
   c.width = o.real("-penalization_width", c.width, "Width of the smooth mask (cells)");
   return c;
 }
@@ -30,6 +32,7 @@ Penalization::Penalization(const Grid& grid, const PenalizationConfig& cfg, doub
 {
   const double h = std::min({grid.h(0), grid.h(1), grid.h(2)});
   lambda_ = cfg.lambda > 0 ? cfg.lambda : 400 * nu / (h * h);
+  fromGrid_ = !(cfg.lambda > 0);
   support_ = cfg.mask == PenalizationConfig::Mask::Smooth ? 0.5 * cfg.width * h : 0;
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &chi_));
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &us_));
@@ -90,7 +93,11 @@ void Penalization::build(const ParticleStore& s, double dt)
     }
   }
   VP_CALL(VecCopy(chi_, theta_));
-  VP_CALL(VecScale(theta_, lambda_ * dt));
+  // From the grid, lambda also holds the fluid inside a particle to its motion within the step
+  // (theta = lambda dt >= 20): at a small viscosity or step, 400 nu / h^2 alone left the mask
+  // porous over a step and lost most of the added mass (docs/coupling.md).
+  stepLambda_ = fromGrid_ ? std::max(lambda_, 20 / dt) : lambda_;
+  VP_CALL(VecScale(theta_, stepLambda_ * dt));
   {
     // A wall face keeps its boundary value: no penalization there.
     FaceArray tA(g.faceDM(), theta_);
@@ -138,7 +145,7 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
   forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
-    f[c] = rho_ * chi * lambda_ * (a[k][j][i][c] - us[k][j][i][c]) * dV;
+    f[c] = rho_ * chi * stepLambda_ * (a[k][j][i][c] - us[k][j][i][c]) * dV;
     const Vec3 t = cross(r, f);
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {

@@ -150,6 +150,32 @@ TEST_CASE("Density ratio 1.1: a released sphere accelerates smoothly towards its
   CHECK(-previous < 0.1);          // and stays below the terminal speed of the heavier seed sphere
 }
 
+TEST_CASE("Impulsive start: the mask holds within a step at any viscosity (added-mass impulse)", "[mpi][coupling]")
+{
+  // A sphere set moving at U in a still liquid receives at once the impulse of its added mass (rho V / 2
+  // in an unbounded liquid; more in this 4 d x 4 d x 6 d box). With lambda = 400 nu / h^2 alone,
+  // lambda dt fell to 1.8 at mu 0.0142 and 0.013 at mu 1e-4 here: the mask stayed porous over the
+  // step and the first impulse dropped to 0.30 and 0.005 rho V U. The floor lambda dt >= 100 makes it
+  // independent of the viscosity (the viscous part is small in one step).
+  auto firstImpulse = [](double mu) {
+    Config c = closedBox({32, 32, 48}, {0.08, 0.08, 0.12});
+    c.fluid.rho = 985;
+    c.fluid.mu = mu;
+    c.time.dt = 0.002;
+    ScopedOptions o({{"-particle_position", "0.04,0.04,0.06"}, {"-particle_radius", "0.01"}, {"-particle_fixed", ""},
+                     {"-particle_velocity", "0,0,-0.01"}, {"-contact_tc", "0.04"}});
+    Simulation sim(PETSC_COMM_WORLD, RunConfig(c));
+    sim.advance(c.time.dt);
+    const double rhoVU = 985 * 4.0 / 3.0 * M_PI * 1e-6 * 0.01;
+    return particleState(PETSC_COMM_WORLD, sim)[8] * c.time.dt / rhoVU;
+  };
+  const double viscous = firstImpulse(0.0142), inviscid = firstImpulse(1e-4);
+  INFO("first-step impulse / (rho V U): mu 0.0142: " << viscous << ", mu 1e-4: " << inviscid);
+  CHECK(inviscid > 0.5);
+  CHECK(inviscid < 0.8);
+  CHECK(viscous == Approx(inviscid).epsilon(0.03));
+}
+
 TEST_CASE("Without particles a run is bitwise the fluid core's: the coupling costs nothing", "[mpi][coupling]")
 {
   // A lid-driven cavity through Simulation (which builds the coupling only for particles) and

@@ -16,7 +16,7 @@ namespace vp {
 
 struct PenalizationConfig {
   enum class Mask { Smooth, Sharp } mask = Mask::Smooth;
-  double lambda = 0;  // [1/s]; 0: 400 nu / h^2 (penetration length sqrt(nu/lambda) = h/20)
+  double lambda = 0;  // [1/s]; 0: max(400 nu / h^2, 20 / dt), set per step by build()
   double width = 1;   // smoothing width in cells
 
   static PenalizationConfig read();  // -penalization_*
@@ -37,7 +37,8 @@ public:
 
   // Distance beyond a sphere's radius where its mask is non-zero [m].
   double support() const { return support_; }
-  double lambda() const { return lambda_; }
+  // lambda of the step being built: the option's value, or from the grid and the step (0 before build).
+  double lambda() const { return stepLambda_; }
 
   // chi, u_s, theta = chi lambda dt and theta u_s at the owned faces from the particles' x, v, w
   // (owned and ghost). theta is zero on faces fixed by a wall.
@@ -59,6 +60,8 @@ private:
   const Grid& grid_;
   PenalizationConfig cfg_;
   double rho_, lambda_, support_;
+  double stepLambda_ = 0;
+  bool fromGrid_ = true;
   Vec chi_ = nullptr, us_ = nullptr, theta_ = nullptr, thetaUs_ = nullptr;
   std::vector<int> owner_;  // per owned face (3 per cell): particle with the largest chi, or -1
 };
