@@ -76,7 +76,7 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
                "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
-               "-contact_hydro", hydro, "-health_overlap_max", 0.3, *extra)
+               "-contact_hydro", hydro, "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *extra)
     u_in, u_out, touched = impact(rows, a)
     if u_in is None or not touched:
         return None
@@ -124,14 +124,29 @@ def timestep():
     """e at nominal St 40, 152 and 500 (impact St about 27, 130 and 450), d/dx 8, against the fluid
     step: the case's contact, stretched over 10 fluid steps (its duration shrinks with the step),
     against a real, short contact (50 us, resolved by the sub-steps, shorter than any fluid step)."""
-    for name, opts in (("stretched", []), ("short", SHORT)):
-        for st in (40, 152, 500):
-            for cfl in (0.5, 0.25, 0.125, 0.0625):
-                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts,
-                                      label="dt_%s_st%d_cfl%g" % (name, st, cfl))
+    cfls = (0.5, 0.25, 0.125, 0.0625)
+    fig, ax = plt.subplots(figsize=(8.5, 4.2))
+    for k, st in enumerate((40, 152, 500)):
+        for name, opts, mark in (("stretched", [], "o-"), ("short", SHORT, "s--")):
+            pts = []
+            for cfl in cfls:
+                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts, label="dt_%s_st%d_cfl%g" % (name, st, cfl))
                 print("timestep: %-9s contact, nominal St %3d, CFL %6g: impact St %.1f, e/e_dry %.3f (exp(-35/St) %.3f)" %
                       (name, st, cfl, out[0], out[1] / E_DRY, math.exp(-35 / out[0])) if out else
                       "timestep: %s contact, St %d, CFL %g: no contact" % (name, st, cfl), flush=True)
+                if out:
+                    pts.append((cfl, out[1] / E_DRY, out[0]))
+            ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, color="C%d" % k, mfc="none",
+                        label="St %.0f, %s contact" % (pts[-1][2], name))
+        curve = math.exp(-35 / pts[-1][2])
+        ax.axhspan(curve - 0.1, curve + 0.1, color="C%d" % k, alpha=0.12)
+    ax.set_xlabel("CFL of the fluid step at the release speed (u dt / h)")
+    ax.set_ylabel("e / e_dry")
+    ax.set_title("Rebound against the fluid step, d/dx 8 (bands: exp(-35/St) +- 0.1)", fontsize=9)
+    ax.invert_xaxis()
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "restitution_timestep.png"), dpi=120)
 
 
 # --- Gondret's set-ups: trajectories ------------------------------------------------------------------
