@@ -140,6 +140,10 @@ vp_case_run(falling_sphere 2 --expect kinetic_energy=1.116425889e-05:1e-6
 # and reproduce stored values (the physics is in scripts/validate collisions).
 vp_case_run(restitution 2 --expect kinetic_energy=4.744793756e-06:1e-6 --expect particle_kinetic_energy=1.301951321e-05:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -grid_n 24,24,28 ${VP_SHORT})
+# The shipped restitution case through its impact (t = 0.022 s, contact at 0.018 s) at its own grid:
+# it must run within its own health limits (the stretched contact's overlap).
+vp_case_run(restitution_impact 2 --expect particle_kinetic_energy=8.436581374e-06:1e-6
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -time_final 0.022 -output_dt 0 -monitor_every 0)
 vp_case_run(oblique_collision 2 --expect kinetic_energy=0.000253480445:1e-6 --expect particle_kinetic_energy=0.0005763584333:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 ${VP_SHORT})
 # The immersed dam breaks, coarse (d/dx 3) and short, on 2 ranks: outputs and stored values; the
