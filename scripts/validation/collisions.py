@@ -92,7 +92,7 @@ def restitution():
     ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
-    table, failures = [], []
+    failures = []
     for hydro, mark, st_list in (("keep", "o", ST_LIST), ("limit", "s", [40, 152, 500])):
         pts = []
         for st in st_list:
@@ -107,7 +107,6 @@ def restitution():
                   "exp(-35/St) %.3f%s" % (hydro, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
             if hydro == HYDRO and abs(e / E_DRY - math.exp(-35 / sti)) > 0.1 and 20 <= sti <= 1000:
                 failures.append(st)
-            table.append((hydro, st, u_in, sti, e))
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % hydro)
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
     ax.set_ylabel("e / e_dry")
@@ -378,12 +377,12 @@ def calib_value(mode, row, speed, resolved=True):
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, extra=()):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r."""
     n = 4 * r
     bc, one, speed = calib_geometry(mode, eps)
-    tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0)) + "".join(map(str, extra))
+    tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
     out = "/tmp/vp_col_cal_" + tag
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
@@ -391,7 +390,7 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, extra=()):
     if lub == "none":
         dt = 0.5 / r ** 2 / MU
         part = ["-particles_file", pair_file(out + "_in", eps, speed), "-particles_fixed"] if one is None else one
-        rows = run(out, *common, *part, "-time_dt", dt, "-time_final", RELAX, "-lub_model", "none", *extra, case="none")
+        rows = run(out, *common, *part, "-time_dt", dt, "-time_final", RELAX, "-lub_model", "none", case="none")
         return calib_value(mode, rows[-1], speed)
     # The correction at the final gap: the same spheres placed there (DEM only, one evaluation).
     part = one

@@ -31,8 +31,7 @@ Penalization::Penalization(const Grid& grid, const PenalizationConfig& cfg, doub
   : grid_(grid), cfg_(cfg), rho_(rho)
 {
   const double h = std::min({grid.h(0), grid.h(1), grid.h(2)});
-  lambda_ = cfg.lambda > 0 ? cfg.lambda : 400 * nu / (h * h);
-  fromGrid_ = !(cfg.lambda > 0);
+  gridLambda_ = 400 * nu / (h * h);
   support_ = cfg.mask == PenalizationConfig::Mask::Smooth ? 0.5 * cfg.width * h : 0;
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &chi_));
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &us_));
@@ -96,7 +95,7 @@ void Penalization::build(const ParticleStore& s, double dt)
   // From the grid, lambda also holds the fluid inside a particle to its motion within the step
   // (theta = lambda dt >= 20): at a small viscosity or step, 400 nu / h^2 alone left the mask
   // porous over a step and lost most of the added mass (docs/coupling.md).
-  stepLambda_ = fromGrid_ ? std::max(lambda_, 20 / dt) : lambda_;
+  stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, 20 / dt);
   VP_CALL(VecScale(theta_, stepLambda_ * dt));
   {
     // A wall face keeps its boundary value: no penalization there.

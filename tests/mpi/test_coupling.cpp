@@ -155,7 +155,7 @@ TEST_CASE("Impulsive start: the mask holds within a step at any viscosity (added
   // A sphere set moving at U in a still liquid receives at once the impulse of its added mass (rho V / 2
   // in an unbounded liquid; more in this 4 d x 4 d x 6 d box). With lambda = 400 nu / h^2 alone,
   // lambda dt fell to 1.8 at mu 0.0142 and 0.013 at mu 1e-4 here: the mask stayed porous over the
-  // step and the first impulse dropped to 0.30 and 0.005 rho V U. The floor lambda dt >= 100 makes it
+  // step and the first impulse dropped to 0.30 and 0.005 rho V U. The floor lambda dt >= 20 makes it
   // independent of the viscosity (the viscous part is small in one step).
   auto firstImpulse = [](double mu) {
     Config c = closedBox({32, 32, 48}, {0.08, 0.08, 0.12});

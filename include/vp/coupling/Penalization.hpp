@@ -37,8 +37,6 @@ public:
 
   // Distance beyond a sphere's radius where its mask is non-zero [m].
   double support() const { return support_; }
-  // lambda of the step being built: the option's value, or from the grid and the step (0 before build).
-  double lambda() const { return stepLambda_; }
 
   // chi, u_s, theta = chi lambda dt and theta u_s at the owned faces from the particles' x, v, w
   // (owned and ghost). theta is zero on faces fixed by a wall.
@@ -59,9 +57,8 @@ private:
 
   const Grid& grid_;
   PenalizationConfig cfg_;
-  double rho_, lambda_, support_;
-  double stepLambda_ = 0;
-  bool fromGrid_ = true;
+  double rho_, gridLambda_, support_;
+  double stepLambda_ = 0;  // lambda of the step being built (build())
   Vec chi_ = nullptr, us_ = nullptr, theta_ = nullptr, thetaUs_ = nullptr;
   std::vector<int> owner_;  // per owned face (3 per cell): particle with the largest chi, or -1
 };
