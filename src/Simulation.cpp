@@ -131,6 +131,14 @@ void Simulation::restore(const CheckpointReader& cp)
 {
   const RunState& r = cp.run();
   cp.loadFluid(fluidState());
+  if (SolutionHistory* h = fluid_->pressureSolver().history()) {
+    // The newest stored solutions, re-added in order: the history is then the uninterrupted run's.
+    std::vector<Vec> stored = cp.loadPressureHistory(fluid_->pressure());
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      if (stored.size() - i <= static_cast<std::size_t>(h->capacity())) h->add(stored[i]);
+      VecDestroy(&stored[i]);
+    }
+  }
   fluid_->setPreviousDt(r.dtOld);
   fluid_->finishStep();
   step_ = r.step;
@@ -144,8 +152,11 @@ void Simulation::restore(const CheckpointReader& cp)
 
 FluidState Simulation::fluidState() const
 {
-  return {fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement(),
-          fluid_->velocityIncrement()};
+  FluidState f{fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement(),
+               fluid_->velocityIncrement(), {}};
+  if (const SolutionHistory* h = fluid_->pressureSolver().history())
+    for (int i = 0; i < h->size(); ++i) f.pressureHistory.push_back(h->solution(i));
+  return f;
 }
 
 void Simulation::checkpoint()

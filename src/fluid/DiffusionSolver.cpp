@@ -25,7 +25,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
   VP_CALL(PetscOptionsHasName(nullptr, "velocity_", "-ksp_atol", &set));
   userAtol_ = set;
   DM f = grid.faceSolveDM();
-  for (Vec* v : {&S_, &SdiagL_, &rhs_, &diag_}) VP_CALL(DMCreateGlobalVector(f, v));
+  for (Vec* v : {&S_, &SdiagL_}) VP_CALL(DMCreateGlobalVector(f, v));
   VP_CALL(DMCreateLocalVector(f, &xL_));
   {
     PetscScalar ****s, ****dl;
@@ -46,6 +46,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
   if (assembled_) {
     assemble();
     VP_CALL(MatDuplicate(SL_, MAT_DO_NOT_COPY_VALUES, &A_));
+    VP_CALL(DMCreateGlobalVector(f, &diag_));
   } else {
     PetscInt n;
     VP_CALL(VecGetLocalSize(S_, &n));
@@ -77,7 +78,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
 DiffusionSolver::~DiffusionSolver()
 {
   KSPDestroy(&ksp_);
-  for (Vec* v : {&S_, &SdiagL_, &rhs_, &diag_, &xL_, &r_, &p_, &q_, &dinv_}) VecDestroy(v);
+  for (Vec* v : {&S_, &SdiagL_, &diag_, &xL_, &r_, &p_, &q_, &dinv_}) VecDestroy(v);
   MatDestroy(&shell_);
   MatDestroy(&A_);
   MatDestroy(&SL_);
@@ -229,12 +230,21 @@ PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
 PetscErrorCode DiffusionSolver::diagonal(Mat A, Vec d)
 {
   DiffusionSolver* self;
+  PetscInt n;
+  const PetscScalar *s, *sd, *th = nullptr;
+  PetscScalar* y;
   PetscFunctionBeginUser;
   PetscCall(MatShellGetContext(A, &self));
-  PetscCall(VecCopy(self->S_, d));
-  if (self->theta_) PetscCall(VecPointwiseMult(self->diag_, self->S_, self->theta_));
-  if (self->theta_) PetscCall(VecAXPY(d, 1.0, self->diag_));
-  PetscCall(VecAXPY(d, -self->a_, self->SdiagL_));
+  PetscCall(VecGetLocalSize(d, &n));
+  PetscCall(VecGetArrayRead(self->S_, &s));
+  PetscCall(VecGetArrayRead(self->SdiagL_, &sd));
+  if (self->theta_) PetscCall(VecGetArrayRead(self->theta_, &th));
+  PetscCall(VecGetArray(d, &y));
+  for (PetscInt i = 0; i < n; ++i) y[i] = s[i] * (1 + (th ? th[i] : 0)) - self->a_ * sd[i];
+  PetscCall(VecRestoreArray(d, &y));
+  if (th) PetscCall(VecRestoreArrayRead(self->theta_, &th));
+  PetscCall(VecRestoreArrayRead(self->SdiagL_, &sd));
+  PetscCall(VecRestoreArrayRead(self->S_, &s));
   PetscFunctionReturn(0);
 }
 
@@ -246,10 +256,11 @@ void DiffusionSolver::setOperator(double a, Vec theta)
     // A = S (1 + theta) - a S L; the pattern is that of S L, so the preconditioner is rebuilt in place.
     VP_CALL(MatCopy(SL_, A_, SAME_NONZERO_PATTERN));
     VP_CALL(MatScale(A_, -a));
-    VP_CALL(VecCopy(S_, diag_));
     if (theta) {
-      VP_CALL(VecPointwiseMult(rhs_, S_, theta));
-      VP_CALL(VecAXPY(diag_, 1.0, rhs_));
+      VP_CALL(VecPointwiseMult(diag_, S_, theta));
+      VP_CALL(VecAXPY(diag_, 1.0, S_));
+    } else {
+      VP_CALL(VecCopy(S_, diag_));
     }
     VP_CALL(MatDiagonalSet(A_, diag_, ADD_VALUES));
   } else if (fused_) {
@@ -268,10 +279,10 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 {
   // A theta changes every step (moving particles); without it A changes with dt only.
   if (a != a_ || theta || theta_) setOperator(a, theta);
-  VP_CALL(VecPointwiseMult(rhs_, S_, r));
+  VP_CALL(VecPointwiseMult(r, S_, r));
   if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol, PETSC_DEFAULT, PETSC_DEFAULT));
-  if (fused_) return fusedSolve(rhs_, du, atol);
-  VP_CALL(KSPSolve(ksp_, rhs_, du));
+  if (fused_) return fusedSolve(r, du, atol);
+  VP_CALL(KSPSolve(ksp_, r, du));
   KSPConvergedReason reason;
   VP_CALL(KSPGetConvergedReason(ksp_, &reason));
   if (reason < 0)

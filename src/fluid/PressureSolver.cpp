@@ -174,6 +174,8 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
   }
   VP_CALL(KSPSetUp(ksp_));
   VP_CALL(MatNullSpaceCreate(grid.comm(), PETSC_TRUE, 0, nullptr, &nullSpace_));
+  if (!direct_ && options.pressureGuesses > 0)
+    history_ = std::make_unique<SolutionHistory>(matrix(), work_, options.pressureGuesses);
 }
 
 PressureSolver::~PressureSolver()
@@ -199,14 +201,18 @@ int PressureSolver::solve(Vec b, Vec x, double atol)
     VP_CALL(KSPSolve(ksp_, b, x));
     return 1;
   }
-  // The previous solution is a good start for smooth flows, a bad one after an impulsive change
-  // (e.g. a lid set in motion): keep it only if it beats zero.
-  PetscReal bnorm, r0;
-  VP_CALL(MatMult(matrix(), x, work_));
-  VP_CALL(VecAYPX(work_, -1.0, b));
-  VP_CALL(VecNorm(work_, NORM_2, &r0));
-  VP_CALL(VecNorm(b, NORM_2, &bnorm));
-  if (r0 > bnorm) VP_CALL(VecSet(x, 0));
+  if (history_) {
+    history_->start(b, x);
+  } else {
+    // The previous solution is a good start for smooth flows, a bad one after an impulsive change
+    // (e.g. a lid set in motion): keep it only if it beats zero.
+    PetscReal bnorm, r0;
+    VP_CALL(MatMult(matrix(), x, work_));
+    VP_CALL(VecAYPX(work_, -1.0, b));
+    VP_CALL(VecNorm(work_, NORM_2, &r0));
+    VP_CALL(VecNorm(b, NORM_2, &bnorm));
+    if (r0 > bnorm) VP_CALL(VecSet(x, 0));
+  }
   if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol * volume, PETSC_DEFAULT, PETSC_DEFAULT));
   VP_CALL(KSPSolve(ksp_, b, x));
   KSPConvergedReason reason;
@@ -214,6 +220,7 @@ int PressureSolver::solve(Vec b, Vec x, double atol)
   if (reason < 0)
     throw StepFailure(std::string("pressure solve did not converge: ") + KSPConvergedReasons[reason] +
                              " (see -pressure_ksp_monitor, -pressure_ksp_max_it)");
+  if (history_) history_->add(x);
   PetscInt its;
   VP_CALL(KSPGetIterationNumber(ksp_, &its));
   return static_cast<int>(its);

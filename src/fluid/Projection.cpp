@@ -24,17 +24,17 @@ Projection::Projection(const Grid& grid, const Config& cfg)
     diffusion_(grid, cfg.bc), pressure_(grid)
 {
   DM f = grid.faceDM(), c = grid.cellDM();
-  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &work_}) VP_CALL(DMCreateGlobalVector(f, v));
+  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_}) VP_CALL(DMCreateGlobalVector(f, v));
   for (Vec* v : {&p_, &div_, &psi_}) VP_CALL(DMCreateGlobalVector(c, v));
   VP_CALL(DMCreateLocalVector(f, &uL_));
   VP_CALL(DMCreateLocalVector(c, &pL_));
   VP_CALL(DMCreateLocalVector(c, &psiL_));
-  for (Vec v : {u_, N_, Nold_, L_, rhs_, du_, work_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
+  for (Vec v : {u_, N_, Nold_, rhs_, du_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
 }
 
 Projection::~Projection()
 {
-  for (Vec* v : {&u_, &N_, &Nold_, &L_, &rhs_, &du_, &work_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
+  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
 }
 
 StepStats Projection::step(double dt)
@@ -52,23 +52,24 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
   {
     StageScope stage(Stage::Advection);
     // Ghosts of u^n are valid from finishStep() of the previous step (or of the initial state).
-    FaceArray u(g.faceDM(), uL_), N(g.faceDM(), N_), L(g.faceDM(), L_);
-    ops::advectionAndLaplacian(g, u.a, N.a, L.a);
+    // The Laplacian goes into rhs, which the combination below then overwrites in place.
+    FaceArray u(g.faceDM(), uL_), N(g.faceDM(), N_), r(g.faceDM(), rhs_);
+    ops::advectionAndLaplacian(g, u.a, N.a, r.a);
     VP_CALL(DMGlobalToLocal(g.cellDM(), p_, INSERT_VALUES, pL_));
     CellArray p(g.cellDM(), pL_);
     fillCellGhosts(g, p.a);
     // rhs = dt [ -(c1 N^n - c0 N^{n-1}) + nu L u^n + f ] - dt/rho grad p^n, zero on fixed faces.
     const double c0 = dtOld_ > 0 ? 0.5 * dt / dtOld_ : 0, c1 = 1 + c0;
-    FaceArray r(g.faceDM(), rhs_), Nold(g.faceDM(), Nold_);
+    FaceArray Nold(g.faceDM(), Nold_);
     {
       // One pass over the owned faces, stored contiguously (3 values per face).
       const PetscInt k0 = g.start(2), j0 = g.start(1), i0 = g.start(0);
       const std::size_t n = 3 * std::size_t(g.end(0) - i0) * (g.end(1) - j0) * (g.end(2) - k0);
       PetscScalar* rp = &r.a[k0][j0][i0][0];
-      const PetscScalar *np = &N.a[k0][j0][i0][0], *op = &Nold.a[k0][j0][i0][0], *lp = &L.a[k0][j0][i0][0];
+      const PetscScalar *np = &N.a[k0][j0][i0][0], *op = &Nold.a[k0][j0][i0][0];
       for (std::size_t q = 0; q < n; q += 3)
         for (int c = 0; c < 3; ++c)
-          rp[q + c] = dt * (-(c1 * np[q + c] - c0 * op[q + c]) + nu_ * lp[q + c] + force_[c]);
+          rp[q + c] = dt * (-(c1 * np[q + c] - c0 * op[q + c]) + nu_ * rp[q + c] + force_[c]);
     }
     for (int c = 0; c < 3; ++c) {  // fixed faces: face 0 of a wall-bounded axis
       if (!isFixedFace(g, c, g.start(c))) continue;
@@ -85,9 +86,19 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
     if (theta) {
       // Penalization in the same implicit solve: rhs += theta (u_s - u^n), so that a steady state
       // satisfies chi lambda (u - u_s) = the other momentum terms exactly (Brinkman), for any dt.
-      VP_CALL(VecPointwiseMult(work_, theta, u_));
-      VP_CALL(VecAXPY(rhs_, -1.0, work_));
-      VP_CALL(VecAXPY(rhs_, 1.0, thetaUs));
+      PetscInt n;
+      const PetscScalar *th, *ts, *u;
+      PetscScalar* r;
+      VP_CALL(VecGetLocalSize(rhs_, &n));
+      VP_CALL(VecGetArrayRead(theta, &th));
+      VP_CALL(VecGetArrayRead(thetaUs, &ts));
+      VP_CALL(VecGetArrayRead(u_, &u));
+      VP_CALL(VecGetArray(rhs_, &r));
+      for (PetscInt i = 0; i < n; ++i) r[i] += ts[i] - th[i] * u[i];
+      VP_CALL(VecRestoreArray(rhs_, &r));
+      VP_CALL(VecRestoreArrayRead(u_, &u));
+      VP_CALL(VecRestoreArrayRead(thetaUs, &ts));
+      VP_CALL(VecRestoreArrayRead(theta, &th));
     }
     // The last increment, rescaled to this step, starts the solve (du is about dt du/dt).
     if (dtOld_ > 0 && dt != dtOld_) VP_CALL(VecScale(du_, dt / dtOld_));

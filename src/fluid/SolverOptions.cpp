@@ -1,5 +1,7 @@
 #include "vp/fluid/SolverOptions.hpp"
+#include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
+#include <string>
 
 namespace vp {
 
@@ -10,6 +12,10 @@ SolverOptions readSolverOptions()
   s.pressurePc = o.text("-pressure_pc_type", "hypre", "Pressure preconditioner: hypre (BoomerAMG, tuned), fft (exact direct "
                                                       "solve on the uniform grid), pfmg, mg, or another PETSc PC");
   s.pressureKsp = o.text("-pressure_ksp_type", "", "Pressure Krylov method (default cg; preonly with fft)");
+  s.pressureGuesses = o.integer("-pressure_guesses", 5, "Earlier pressure solutions (and right-hand sides) from which an iterative "
+                                "solve's start is fitted (Fischer's projection; 0: the last solution only)");
+  if (!optionsHelpMode() && (s.pressureGuesses < 0 || s.pressureGuesses > 50))
+    failOption("-pressure_guesses", "must be in [0, 50], got " + std::to_string(s.pressureGuesses));
   o.real("-pressure_ksp_rtol", 1e-6, "Pressure relative tolerance (measured choice, docs/fluid.md)");
   s.viscousOperator = static_cast<ViscousOperator>(
       o.choice("-velocity_operator", {"fused", "shell", "assembled"}, 0,

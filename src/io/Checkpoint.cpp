@@ -79,6 +79,8 @@ std::vector<std::pair<const char*, Vec>> named(const FluidState& f)
           {"pressure_increment", f.pressureIncrement}, {"velocity_increment", f.velocityIncrement}};
 }
 
+std::string historyName(std::size_t i) { return "pressure_history_" + std::to_string(i); }
+
 std::string list(const double* v, int n)
 {
   std::string s;
@@ -124,6 +126,11 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   for (auto [n, v] : named(fluid)) {
     VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(v), n));
     VP_CALL(VecView(v, viewer));
+  }
+  for (std::size_t i = 0; i < fluid.pressureHistory.size(); ++i) {
+    // The history's own vectors: named only for the write, they keep the name.
+    VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(fluid.pressureHistory[i]), historyName(i).c_str()));
+    VP_CALL(VecView(fluid.pressureHistory[i], viewer));
   }
   hid_t file;
   VP_CALL(PetscViewerHDF5GetFileId(viewer, &file));
@@ -296,6 +303,25 @@ void CheckpointReader::loadFluid(const FluidState& fluid) const
     VP_CALL(VecLoad(v, viewer));
   }
   VP_CALL(PetscViewerDestroy(&viewer));
+}
+
+std::vector<Vec> CheckpointReader::loadPressureHistory(Vec like) const
+{
+  std::vector<Vec> history;
+  PetscViewer viewer;
+  VP_CALL(PetscViewerHDF5Open(comm_, path_.c_str(), FILE_MODE_READ, &viewer));
+  for (std::size_t i = 0;; ++i) {
+    PetscBool has;
+    VP_CALL(PetscViewerHDF5HasDataset(viewer, ("/" + historyName(i)).c_str(), &has));
+    if (!has) break;
+    Vec v;
+    VP_CALL(VecDuplicate(like, &v));
+    VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(v), historyName(i).c_str()));
+    VP_CALL(VecLoad(v, viewer));
+    history.push_back(v);
+  }
+  VP_CALL(PetscViewerDestroy(&viewer));
+  return history;
 }
 
 } // namespace vp

@@ -25,8 +25,9 @@ public:
   DiffusionSolver(const DiffusionSolver&) = delete;
   DiffusionSolver& operator=(const DiffusionSolver&) = delete;
 
-  // Solves (I + theta - a L) du = r for du (du holds the initial guess); theta may be null. atol: absolute
-  // tolerance on the S-weighted residual unless -velocity_ksp_atol is given. Returns iterations.
+  // Solves (I + theta - a L) du = r for du (du holds the initial guess; r is overwritten by S r);
+  // theta may be null. atol: absolute tolerance on the S-weighted residual unless
+  // -velocity_ksp_atol is given. Returns iterations.
   int solve(double a, Vec r, Vec du, double atol, Vec theta = nullptr);
 
   // The operator S (1 + theta) - a S L of the last solve (or of setOperator), shell or assembled.
@@ -56,7 +57,7 @@ private:
   const BoundaryConfig bc_;
   bool assembled_ = false, fused_ = false;
   Mat SL_ = nullptr, A_ = nullptr, shell_ = nullptr;
-  Vec S_ = nullptr, SdiagL_ = nullptr, rhs_ = nullptr, diag_ = nullptr, xL_ = nullptr;
+  Vec S_ = nullptr, SdiagL_ = nullptr, diag_ = nullptr, xL_ = nullptr;  // diag_: assembled only
   Vec theta_ = nullptr;
   Vec r_ = nullptr, p_ = nullptr, q_ = nullptr, dinv_ = nullptr;  // fused CG: residual, direction, A p, 1/diag
   KSP ksp_ = nullptr;

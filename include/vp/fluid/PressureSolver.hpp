@@ -6,8 +6,11 @@
 // Laplacian (see docs/fluid.md, linear solvers); -pressure_pc_type mg (geometric multigrid on the DMDA with
 // rediscretised coarse levels), -pressure_pc_type pfmg (hypre PFMG) and -pressure_pc_type fft (an
 // exact FFT inverse, FftPoisson.hpp; KSP preonly by default with it) also work. The operator
-// is assembled and the preconditioner set up once; each solve starts from the previous solution.
+// is assembled and the preconditioner set up once; an iterative solve starts from the fit of the
+// last -pressure_guesses solutions to its right-hand side (docs/fluid.md, initial guess).
+#include "vp/fluid/SolutionHistory.hpp"
 #include "vp/grid/Grid.hpp"
+#include <memory>
 #include <petscksp.h>
 
 namespace vp {
@@ -23,6 +26,8 @@ public:
   // holds the initial guess. atol: absolute tolerance on -lap_h x - b unless -pressure_ksp_atol is
   // given (then it applies to the scaled system). Returns iterations.
   int solve(Vec b, Vec x, double atol);
+  // The solutions the next starts are fitted from (null for a direct solve or -pressure_guesses 0).
+  SolutionHistory* history() const { return history_.get(); }
   Mat matrix() const;  // A = -V lap_h
   KSP ksp() const { return ksp_; }
 
@@ -36,6 +41,7 @@ private:
   MatNullSpace nullSpace_ = nullptr;
   Vec work_ = nullptr;
   bool userAtol_ = false;
+  std::unique_ptr<SolutionHistory> history_;
   bool direct_ = false;  // -pressure_ksp_type preonly (e.g. with the exact fft PC): no initial guess
   Box box_;
 };

@@ -51,6 +51,7 @@ public:
   double previousDt() const { return dtOld_; }
   void setPreviousDt(double dt) { dtOld_ = dt; }
   PressureSolver& pressureSolver() { return pressure_; }
+  const PressureSolver& pressureSolver() const { return pressure_; }
   DiffusionSolver& diffusionSolver() { return diffusion_; }
 
 private:
@@ -60,7 +61,7 @@ private:
   const Vec3 force_;
   DiffusionSolver diffusion_;
   PressureSolver pressure_;
-  Vec u_, p_, uL_, pL_, N_, Nold_, L_, rhs_, du_, work_, div_, psi_, psiL_;
+  Vec u_, p_, uL_, pL_, N_, Nold_, rhs_, du_, div_, psi_, psiL_;
   double dtOld_ = 0;
   ops::FieldStats stats_;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // Checkpoint/restart (docs/outputs.md). checkpoint_<step 6 digits>.h5 holds all
 // an exact continuation needs: the fluid state (face velocity, pressure, the previous step's
-// convection term, the last pressure increment, all in natural DMDA order so that a restart may use
+// convection term, the last pressure and velocity increments, the pressure solutions the next
+// starts are fitted from, all in natural DMDA order so that a restart may use
 // another number of ranks), every particle with its contact springs and last-sub-step forces, and
 // the run's counters. It is written under a temporary name and renamed; checkpoint_latest.h5, a
 // symbolic link, moves to it only then, so a crash never leaves a half-written checkpoint behind.
@@ -25,9 +26,11 @@ struct RunState {
   std::vector<double> particleSnapshots;  // (step, time, count) of the particle snapshots
 };
 
-// The fluid vectors a checkpoint holds (faceDM, cellDM, faceDM, cellDM global vectors).
+// The fluid vectors a checkpoint holds (faceDM, cellDM, faceDM, cellDM, faceDM global vectors) and
+// the pressure solutions the next solves' starts are fitted from (cellDM, oldest first; SolutionHistory.hpp).
 struct FluidState {
   Vec velocity, pressure, convectionOld, pressureIncrement, velocityIncrement;
+  std::vector<Vec> pressureHistory;
 };
 
 class CheckpointWriter {
@@ -59,8 +62,11 @@ public:
   const std::string& setupOptions() const { return setup_; }
   // Every particle (the same list on every rank), springs attached.
   const std::vector<ParticleRecord>& particles() const { return particles_; }
-  // Collective: reads the fluid vectors.
+  // Collective: reads the fluid vectors (not the pressure history).
   void loadFluid(const FluidState& fluid) const;
+  // Collective: the stored pressure history as new vectors like `like`, oldest first (none in
+  // checkpoints older than it); the caller destroys them.
+  std::vector<Vec> loadPressureHistory(Vec like) const;
 
 private:
   MPI_Comm comm_;
