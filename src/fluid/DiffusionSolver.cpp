@@ -71,14 +71,14 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : g
     if (std::string(kt) != KSPCG || std::string(pt) != PCJACOBI)
       throw InputError(std::string("option -velocity_operator: fused is CG + Jacobi; for -velocity_ksp_type ") + kt +
                        " -velocity_pc_type " + pt + " choose -velocity_operator shell (or assembled)");
-    for (Vec* v : {&r_, &p_, &q_, &dinv_}) VP_CALL(DMCreateGlobalVector(f, v));
+    for (Vec* v : {&r_, &q_, &dinv_}) VP_CALL(DMCreateGlobalVector(f, v));
   }
 }
 
 DiffusionSolver::~DiffusionSolver()
 {
   KSPDestroy(&ksp_);
-  for (Vec* v : {&S_, &SdiagL_, &diag_, &xL_, &r_, &p_, &q_, &dinv_}) VecDestroy(v);
+  for (Vec* v : {&S_, &SdiagL_, &diag_, &xL_, &r_, &q_, &dinv_}) VecDestroy(v);
   MatDestroy(&shell_);
   MatDestroy(&A_);
   MatDestroy(&SL_);
@@ -153,21 +153,29 @@ void DiffusionSolver::assemble()
 // y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
 // 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
 // row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
-double DiffusionSolver::apply(Vec x, Vec y, bool dot)
+double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
 {
   const Grid& g = grid_;
   DM f = g.faceSolveDM();
-  VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
+  const Vec xLocal = local ? x : xL_;
+  if (local) {
+    VP_CALL(DMLocalToLocalBegin(f, x, INSERT_VALUES, x));
+    VP_CALL(DMLocalToLocalEnd(f, x, INSERT_VALUES, x));
+  } else {
+    VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
+  }
   {
-    FaceArray xa(f, xL_);
+    FaceArray xa(f, xLocal);
     fillFaceGhosts(g, bc_, xa.a, true);
   }
   PetscInt gs[3], gm[3];
   VP_CALL(DMDAGetGhostCorners(f, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
   const PetscScalar *xl, *xg, *s, *th = nullptr;
   PetscScalar* ya;
-  VP_CALL(VecGetArrayRead(xL_, &xl));
-  VP_CALL(VecGetArrayRead(x, &xg));  // the ghost fill zeroes the fixed faces in xL
+  VP_CALL(VecGetArrayRead(xLocal, &xl));
+  // The ghost fill zeroes the fixed faces in the local array: their rows read the global values
+  // (a local x has zero there, see fusedSolve).
+  VP_CALL(VecGetArrayRead(local ? xLocal : x, &xg));
   VP_CALL(VecGetArrayRead(S_, &s));
   if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
   VP_CALL(VecGetArray(y, &ya));
@@ -195,14 +203,14 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot)
       }
       // Decoupled rows (1 + theta) x of the fixed wall faces (their increment is zero).
       const PetscScalar* tr = th ? th + o : nullptr;
-      auto fixedRow = [&](PetscInt n) { yr[n] = (tr ? 1 + tr[n] : 1) * xg[o + n]; };
+      const PetscScalar* xo = local ? xr : xg + o;  // the row's owned values
+      auto fixedRow = [&](PetscInt n) { yr[n] = (tr ? 1 + tr[n] : 1) * xo[n]; };
       if (g.atLow(0)) fixedRow(0);
       if (j == 0 && g.atLow(1))
         for (PetscInt n = 1; n < row; n += 3) fixedRow(n);
       if (k == 0 && g.atLow(2))
         for (PetscInt n = 2; n < row; n += 3) fixedRow(n);
       if (dot) {  // the row is still in cache
-        const PetscScalar* __restrict xo = xg + o;
         double sum = 0;
 #pragma omp simd reduction(+ : sum)
         for (PetscInt n = 0; n < row; ++n) sum += xo[n] * yr[n];
@@ -212,8 +220,8 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot)
   VP_CALL(VecRestoreArray(y, &ya));
   if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
   VP_CALL(VecRestoreArrayRead(S_, &s));
-  VP_CALL(VecRestoreArrayRead(x, &xg));
-  VP_CALL(VecRestoreArrayRead(xL_, &xl));
+  VP_CALL(VecRestoreArrayRead(local ? xLocal : x, &xg));
+  VP_CALL(VecRestoreArrayRead(xLocal, &xl));
   return xy;
 }
 
@@ -370,6 +378,35 @@ void newDirection(PetscInt n, double beta, const PetscScalar* __restrict r, cons
 
 } // namespace
 
+template <class F>
+void DiffusionSolver::forRows(F f) const
+{
+  const Grid& g = grid_;
+  PetscInt gs[3], gm[3];
+  VP_CALL(DMDAGetGhostCorners(g.faceSolveDM(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  const PetscInt row = 3 * (g.end(0) - g.start(0));
+  PetscInt o = 0;
+  for (PetscInt k = g.start(2); k < g.end(2); ++k)
+    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row)
+      f(o, 3 * (((k - gs[2]) * gm[1] + (j - gs[1])) * gm[0] + g.start(0) - gs[0]), row);
+}
+
+template <class F>
+void DiffusionSolver::forFixedFaces(F f) const
+{
+  const Grid& g = grid_;
+  const PetscInt row = 3 * (g.end(0) - g.start(0));
+  PetscInt o = 0;
+  for (PetscInt k = g.start(2); k < g.end(2); ++k)
+    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
+      if (g.atLow(0)) f(o);
+      if (j == 0 && g.atLow(1))
+        for (PetscInt n = 1; n < row; n += 3) f(o + n);
+      if (k == 0 && g.atLow(2))
+        for (PetscInt n = 2; n < row; n += 3) f(o + n);
+    }
+}
+
 int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
 {
   PetscReal rtol, abstol, dtol;
@@ -382,23 +419,48 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
   auto fail = [](const std::string& why) {
     throw StepFailure("velocity (diffusion) solve did not converge: " + why + " (see -velocity_operator shell -velocity_ksp_monitor)");
   };
-  // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b.
+  // The fixed wall faces' rows are decoupled, (1 + theta) x = b: solved here, so that their
+  // residual and direction stay zero (the local direction has zero there after its ghost fill).
+  {
+    WriteValues xv(x);
+    ReadValues bv(b), dv(dinv_);
+    forFixedFaces([&](PetscInt o) { xv[o] = bv[o] * dv[o]; });
+  }
+  // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b. p lives in xL_ (the ghosted layout, free
+  // once A x is taken): its products need no copy into one.
   apply(x, q_, false);
   double sums[3] = {0, 0, 0};
-  initialResidual(n, ReadValues(b), ReadValues(q_), ReadValues(dinv_), WriteValues(r_), WriteValues(p_), sums);
+  {
+    ReadValues bv(b), qv(q_), dv(dinv_);
+    WriteValues rv(r_), pv(xL_);
+    forRows([&](PetscInt o, PetscInt l, PetscInt len) {
+      double s3[3];
+      initialResidual(len, bv + o, qv + o, dv + o, rv + o, pv + l, s3);
+      for (int i = 0; i < 3; ++i) sums[i] += s3[i];
+    });
+  }
   MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
   double rz = sums[0];
   // PETSc's default test on the unpreconditioned residual: ||r|| <= max(rtol ||b||, atol).
   const double tol = std::max(rtol * std::sqrt(sums[2]), static_cast<double>(abstol));
   if (std::sqrt(sums[1]) <= tol) return 0;
   for (PetscInt it = 1; it <= maxIts; ++it) {
-    double pq = apply(p_, q_, true);
+    double pq = apply(xL_, q_, true, true);
     MPI_Allreduce(MPI_IN_PLACE, &pq, 1, MPI_DOUBLE, MPI_SUM, comm);
     if (!(pq > 0)) fail("the operator is not positive definite (p.Ap = " + std::to_string(pq) + ")");
     const double alpha = rz / pq;
     // x += alpha p; r -= alpha q; sums r.D^-1 r and r.r.
     double s2[2] = {0, 0};
-    update(n, alpha, ReadValues(p_), ReadValues(q_), ReadValues(dinv_), WriteValues(x), WriteValues(r_), s2);
+    {
+      ReadValues pv(xL_), qv(q_), dv(dinv_);
+      WriteValues xv(x), rv(r_);
+      forRows([&](PetscInt o, PetscInt l, PetscInt len) {
+        double row[2];
+        update(len, alpha, pv + l, qv + o, dv + o, xv + o, rv + o, row);
+        s2[0] += row[0];
+        s2[1] += row[1];
+      });
+    }
     MPI_Allreduce(MPI_IN_PLACE, s2, 2, MPI_DOUBLE, MPI_SUM, comm);
     const double rnorm = std::sqrt(s2[1]);
     if (!std::isfinite(rnorm)) fail("the residual is not finite");
@@ -406,7 +468,9 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     // p = D^-1 r + beta p.
     const double beta = s2[0] / rz;
     rz = s2[0];
-    newDirection(n, beta, ReadValues(r_), ReadValues(dinv_), WriteValues(p_));
+    ReadValues rv(r_), dv(dinv_);
+    WriteValues pv(xL_);
+    forRows([&](PetscInt o, PetscInt l, PetscInt len) { newDirection(len, beta, rv + o, dv + o, pv + l); });
   }
   fail("no convergence in " + std::to_string(maxIts) + " iterations (-velocity_ksp_max_it)");
   return -1;

@@ -48,8 +48,15 @@ private:
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
-  // y = A x; returns this rank's part of x.y when `dot` is set.
-  double apply(Vec x, Vec y, bool dot);
+  // y = A x; returns this rank's part of x.y when `dot` is set. x global, or local (its owned
+  // values set; the ghosts are updated here) when `local` is set.
+  double apply(Vec x, Vec y, bool dot, bool local = false);
+  // f(global offset, local offset, length) for every owned grid row of 3 nx values.
+  template <class F>
+  void forRows(F f) const;
+  // f(global offset) for every owned fixed wall face (face 0 of a wall-bounded axis).
+  template <class F>
+  void forFixedFaces(F f) const;
   // CG + Jacobi on A du = b with PETSc's default convergence test on the unpreconditioned residual.
   int fusedSolve(Vec b, Vec du, double atol);
 
@@ -59,7 +66,7 @@ private:
   Mat SL_ = nullptr, A_ = nullptr, shell_ = nullptr;
   Vec S_ = nullptr, SdiagL_ = nullptr, diag_ = nullptr, xL_ = nullptr;  // diag_: assembled only
   Vec theta_ = nullptr;
-  Vec r_ = nullptr, p_ = nullptr, q_ = nullptr, dinv_ = nullptr;  // fused CG: residual, direction, A p, 1/diag
+  Vec r_ = nullptr, q_ = nullptr, dinv_ = nullptr;  // fused CG: residual, A p, 1/diag (the direction: xL_)
   KSP ksp_ = nullptr;
   double a_ = -1;
   bool userAtol_ = false;
