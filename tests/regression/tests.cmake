@@ -22,6 +22,7 @@ vp_bad_input(zero_viscosity 1 "option -fluid_mu: must be > 0, got 0" -fluid_mu 0
 vp_bad_input(too_many_ranks 3 "option -grid_n: 2,2,2 cells cannot be split over 3 ranks" -grid_n 2,2,2)
 vp_bad_input(fft_too_many_ranks 3 "option -pressure_pc_type: fft splits the z axis into slabs, one z cell per rank at least: 3 ranks for 2 z cells"
              -grid_n 8,8,2 -pressure_pc_type fft)
+vp_bad_input(pressure_guesses_out_of_range 1 "option -pressure_guesses: must be in \\[0, 50\\], got -1" -pressure_guesses -1)
 vp_bad_input(missing_options_file 2 "option -options_file: cannot open 'no/such/case.opts'" -options_file no/such/case.opts)
 vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -output_every -1)
 vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)
