@@ -170,12 +170,12 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
   }
   PetscInt gs[3], gm[3];
   VP_CALL(DMDAGetGhostCorners(f, &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  const PetscScalar *xl, *xg, *s, *th = nullptr;
+  const PetscScalar *xl, *xg = nullptr, *s, *th = nullptr;
   PetscScalar* ya;
   VP_CALL(VecGetArrayRead(xLocal, &xl));
-  // The ghost fill zeroes the fixed faces in the local array: their rows read the global values
-  // (a local x has zero there, see fusedSolve).
-  VP_CALL(VecGetArrayRead(local ? xLocal : x, &xg));
+  // The ghost fill zeroes the fixed faces in the local array: a global x's rows read its own values
+  // (a local x is zero there, see fusedSolve).
+  if (!local) VP_CALL(VecGetArrayRead(x, &xg));
   VP_CALL(VecGetArrayRead(S_, &s));
   if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
   VP_CALL(VecGetArray(y, &ya));
@@ -220,7 +220,7 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
   VP_CALL(VecRestoreArray(y, &ya));
   if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
   VP_CALL(VecRestoreArrayRead(S_, &s));
-  VP_CALL(VecRestoreArrayRead(local ? xLocal : x, &xg));
+  if (!local) VP_CALL(VecRestoreArrayRead(x, &xg));
   VP_CALL(VecRestoreArrayRead(xLocal, &xl));
   return xy;
 }
