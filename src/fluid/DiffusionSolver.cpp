@@ -1,6 +1,7 @@
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/OptionDefaults.hpp"
+#include "vp/core/VecValues.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
@@ -173,8 +174,7 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
   const PetscScalar *xl, *xg = nullptr, *s, *th = nullptr;
   PetscScalar* ya;
   VP_CALL(VecGetArrayRead(xLocal, &xl));
-  // The ghost fill zeroes the fixed faces in the local array: a global x's rows read its own values
-  // (a local x is zero there, see fusedSolve).
+  // The ghost fill zeroes the fixed faces in the local array: a global x's rows read its own values.
   if (!local) VP_CALL(VecGetArrayRead(x, &xg));
   VP_CALL(VecGetArrayRead(S_, &s));
   if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
@@ -201,22 +201,15 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
           yr[n] = sr[n] * (wc * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
                            wz * (xr[n + sz] + xr[n - sz]));
       }
-      // Decoupled rows (1 + theta) x of the fixed wall faces (their increment is zero).
-      const PetscScalar* tr = th ? th + o : nullptr;
-      const PetscScalar* xo = local ? xr : xg + o;  // the row's owned values
-      auto fixedRow = [&](PetscInt n) { yr[n] = (tr ? 1 + tr[n] : 1) * xo[n]; };
-      if (g.atLow(0)) fixedRow(0);
-      if (j == 0 && g.atLow(1))
-        for (PetscInt n = 1; n < row; n += 3) fixedRow(n);
-      if (k == 0 && g.atLow(2))
-        for (PetscInt n = 2; n < row; n += 3) fixedRow(n);
-      if (dot) {  // the row is still in cache
+      if (dot) {  // the row is still in cache; a local x is zero on the fixed faces (fusedSolve)
         double sum = 0;
 #pragma omp simd reduction(+ : sum)
-        for (PetscInt n = 0; n < row; ++n) sum += xo[n] * yr[n];
+        for (PetscInt n = 0; n < row; ++n) sum += xr[n] * yr[n];
         xy += sum;
       }
     }
+  // Decoupled rows (1 + theta) x of the fixed wall faces (their increment is zero).
+  forFixedFaces([&](PetscInt o) { ya[o] = local ? 0.0 : (th ? 1 + th[o] : 1) * xg[o]; });
   VP_CALL(VecRestoreArray(y, &ya));
   if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
   VP_CALL(VecRestoreArrayRead(S_, &s));
@@ -304,37 +297,6 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 // The vector passes of the fused CG (restrict: the arrays never alias; simd reductions: the dot
 // products vectorise, summed in a fixed order for a given build).
 namespace {
-
-// A vector's local values for the length of a scope (VecGetArrayRead if Read, else VecGetArray).
-template <bool Read>
-class Values {
-  using Pointer = std::conditional_t<Read, const PetscScalar*, PetscScalar*>;
-
-public:
-  explicit Values(Vec v) : v_(v)
-  {
-    if constexpr (Read)
-      VP_CALL(VecGetArrayRead(v, &a_));
-    else
-      VP_CALL(VecGetArray(v, &a_));
-  }
-  ~Values()
-  {
-    if constexpr (Read)
-      VecRestoreArrayRead(v_, &a_);
-    else
-      VecRestoreArray(v_, &a_);
-  }
-  Values(const Values&) = delete;
-  Values& operator=(const Values&) = delete;
-  operator Pointer() const { return a_; }
-
-private:
-  Vec v_;
-  Pointer a_;
-};
-using ReadValues = Values<true>;
-using WriteValues = Values<false>;
 
 void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
                      const PetscScalar* __restrict dinv, PetscScalar* __restrict r, PetscScalar* __restrict p,

@@ -1,6 +1,7 @@
 #include "vp/fluid/Projection.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
+#include "vp/core/VecValues.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
 #include <algorithm>
@@ -87,18 +88,10 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
       // Penalization in the same implicit solve: rhs += theta (u_s - u^n), so that a steady state
       // satisfies chi lambda (u - u_s) = the other momentum terms exactly (Brinkman), for any dt.
       PetscInt n;
-      const PetscScalar *th, *ts, *u;
-      PetscScalar* r;
       VP_CALL(VecGetLocalSize(rhs_, &n));
-      VP_CALL(VecGetArrayRead(theta, &th));
-      VP_CALL(VecGetArrayRead(thetaUs, &ts));
-      VP_CALL(VecGetArrayRead(u_, &u));
-      VP_CALL(VecGetArray(rhs_, &r));
+      ReadValues th(theta), ts(thetaUs), u(u_);
+      WriteValues r(rhs_);
       for (PetscInt i = 0; i < n; ++i) r[i] += ts[i] - th[i] * u[i];
-      VP_CALL(VecRestoreArray(rhs_, &r));
-      VP_CALL(VecRestoreArrayRead(u_, &u));
-      VP_CALL(VecRestoreArrayRead(thetaUs, &ts));
-      VP_CALL(VecRestoreArrayRead(theta, &th));
     }
     // The last increment, rescaled to this step, starts the solve (du is about dt du/dt).
     if (dtOld_ > 0 && dt != dtOld_) VP_CALL(VecScale(du_, dt / dtOld_));

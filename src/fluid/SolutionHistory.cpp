@@ -1,5 +1,6 @@
 #include "vp/fluid/SolutionHistory.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/VecValues.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -12,14 +13,12 @@ namespace {
 double dot(Vec a, Vec b)
 {
   PetscInt n;
-  const PetscScalar *pa, *pb;
   VP_CALL(VecGetLocalSize(a, &n));
-  VP_CALL(VecGetArrayRead(a, &pa));
-  VP_CALL(VecGetArrayRead(b, &pb));
   double s = 0;
-  for (PetscInt i = 0; i < n; ++i) s += pa[i] * pb[i];
-  VP_CALL(VecRestoreArrayRead(b, &pb));
-  VP_CALL(VecRestoreArrayRead(a, &pa));
+  {
+    ReadValues pa(a), pb(b);
+    for (PetscInt i = 0; i < n; ++i) s += pa[i] * pb[i];
+  }
   MPI_Comm comm;
   VP_CALL(PetscObjectGetComm(reinterpret_cast<PetscObject>(a), &comm));
   MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_SUM, comm);

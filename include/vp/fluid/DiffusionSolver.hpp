@@ -48,8 +48,8 @@ private:
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
-  // y = A x; returns this rank's part of x.y when `dot` is set. x global, or local (its owned
-  // values set; the ghosts are updated here) when `local` is set.
+  // y = A x. x global, or local (its owned values set, zero on the fixed wall faces; the ghosts
+  // are updated here) when `local` is set; then `dot` also returns this rank's part of x.y.
   double apply(Vec x, Vec y, bool dot, bool local = false);
   // f(global offset, local offset, length) for every owned grid row of 3 nx values.
   template <class F>
