@@ -5,6 +5,7 @@
 #include "vp/Simulation.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/HugePages.hpp"
+#include "vp/core/OneRankTransport.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/io/OutputDir.hpp"
 #include "vp/io/RunRecord.hpp"
@@ -96,6 +97,7 @@ int main(int argc, char** argv)
   vp::setCommandLine(argc, argv);
   const bool help = takeHelp(argc, argv);
   vp::allocateLargeOnHugePages();
+  vp::useLocalTransportForOneRank();
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) return 1;
   int rc = 0;
   try {

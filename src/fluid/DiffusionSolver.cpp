@@ -160,8 +160,10 @@ double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
   DM f = g.faceSolveDM();
   const Vec xLocal = local ? x : xL_;
   if (local) {
-    VP_CALL(DMLocalToLocalBegin(f, x, INSERT_VALUES, x));
-    VP_CALL(DMLocalToLocalEnd(f, x, INSERT_VALUES, x));
+    if (g.exchangesGhosts()) {
+      VP_CALL(DMLocalToLocalBegin(f, x, INSERT_VALUES, x));
+      VP_CALL(DMLocalToLocalEnd(f, x, INSERT_VALUES, x));
+    }
   } else {
     VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
   }

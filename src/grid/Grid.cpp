@@ -37,6 +37,7 @@ Grid::Grid(MPI_Comm comm, const GridConfig& g, const BoundaryConfig& bc) : comm_
   VP_CALL(DMDAGetInfo(cellDM_, nullptr, nullptr, nullptr, nullptr, &m, &np, &p, nullptr, nullptr,
                       nullptr, nullptr, nullptr, nullptr));
   VP_CALL(DMDAGetOwnershipRanges(cellDM_, &lx, &ly, &lz));
+  exchanges_ = m * np * p > 1 || periodic_[0] || periodic_[1] || periodic_[2];
   // PETSc's STAR stencil leaves edge ghosts stale, which advection needs: BOX for the velocity.
   VP_CALL(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_BOX, n_[0], n_[1], n_[2], m, np, p, 3, 1,
                        lx, ly, lz, &faceDM_));

@@ -34,6 +34,9 @@ public:
   PetscInt end(int d) const { return end_[d]; }
   bool atLow(int d) const { return !periodic_[d] && start_[d] == 0; }
   bool atHigh(int d) const { return !periodic_[d] && end_[d] == n_[d]; }
+  // Whether a ghost update moves any value: not for one rank without periodic axes, where every
+  // ghost lies outside the domain and is filled by the boundary rules (Boundary.hpp).
+  bool exchangesGhosts() const { return exchanges_; }
 
   double cellCentre(int d, PetscInt i) const { return lo_[d] + (i + 0.5) * h_[d]; }
   double faceCoord(int d, PetscInt i) const { return lo_[d] + i * h_[d]; }
@@ -44,6 +47,7 @@ private:
   int n_[3];
   double lo_[3], hi_[3], h_[3];
   bool periodic_[3];
+  bool exchanges_ = true;
   PetscInt start_[3], end_[3];
 };
 
