@@ -57,6 +57,7 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restart->particles(), true);
   else if (particleCfg_.any())
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
+  if (cfg_.output.collapse && !dem_) failOption("-collapse_monitor", "measures a granular collapse: the case has no particles");
   fluid_ = std::make_unique<Projection>(grid_, cfg_);
   if (restart)
     restore(*restart);
@@ -93,6 +94,7 @@ void Simulation::openOutputs()
   diagnostics_ = std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, resumeStep);
   if (!cfg_.output.probes.empty() && !cfg_.fluid.off)
     probes_ = std::make_unique<Probes>(grid_, cfg_.output.probes, dir, restart_ ? time_ : -1);
+  if (cfg_.output.collapse) collapse_ = std::make_unique<CollapseMonitor>(grid_, dir, restart_ ? time_ : -1);
   if (restart_) {
     fields_->resume(restart_->fieldSnapshots);
     if (particleWriter_) particleWriter_->resume(restart_->particleSnapshots);
@@ -281,6 +283,7 @@ int Simulation::run()
     if (snapshots_.on()) output();
     if (tracker_) tracker_->record(dem_->particles(), time_);
     if (probes_) probes_->record(time_, fluid_->pressure());
+    if (collapse_) collapse_->record(time_, dem_->particles());
   }
   restart_.reset();
   std::string stop;
@@ -330,6 +333,7 @@ int Simulation::run()
   const bool early = status != 0 || stop == "reached -time_wall_limit";
   if ((checkpointSchedule_.on() || early) && checkpointSchedule_.lastStep() != step_) checkpoint();
   if (tracker_) tracker_->flush();
+  if (collapse_) collapse_->writeDeposit(dem_->particles());
   finish(stop);
   return status;
 }
@@ -350,6 +354,7 @@ void Simulation::record()
   recordedStep_ = step_;
   if (tracker_) tracker_->record(dem_->particles(), time_);
   if (probes_) probes_->record(time_, fluid_->pressure());
+  if (collapse_) collapse_->record(time_, dem_->particles());
   if (diagnostics_)
     diagnostics_->record(step_, time_, fluid_->previousDt(), last_, fluid_->stats(), cfg_.fluid.rho, MPI_Wtime() - wallStart_,
                          dem_.get());

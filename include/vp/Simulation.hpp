@@ -15,6 +15,7 @@
 #include "vp/io/FieldWriter.hpp"
 #include "vp/io/ParticleTracker.hpp"
 #include "vp/io/ParticleWriter.hpp"
+#include "vp/io/CollapseMonitor.hpp"
 #include "vp/io/Probes.hpp"
 #include "vp/io/Schedule.hpp"
 #include "vp/particles/DemSolver.hpp"
@@ -75,6 +76,7 @@ private:
   std::unique_ptr<FieldWriter> fields_;
   std::unique_ptr<Diagnostics> diagnostics_;
   std::unique_ptr<Probes> probes_;                 // -probe
+  std::unique_ptr<CollapseMonitor> collapse_;      // -collapse_monitor
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
   std::unique_ptr<Penalization> penalization_;     // particles in a fluid
   std::vector<double> hydroSums_;

@@ -82,6 +82,9 @@ Config Config::read()
     const std::vector<double> probes = o.realList("-probe", "Pressure probes x,y,z[,x,y,z...] (m): probes.csv, one row per step");
     if (probes.size() % 3 && !optionsHelpMode()) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
     for (std::size_t k = 0; k + 2 < probes.size(); k += 3) c.output.probes.push_back({probes[k], probes[k + 1], probes[k + 2]});
+    c.output.collapse = o.flag("-collapse_monitor", false, "Granular collapse along +x from the low-x wall: front, 99th-percentile "
+                                                           "front and back-wall height (collapse.csv, one row per series step), "
+                                                           "deposit profile at the end (deposit.csv)");
   }
   {
     OptionGroup o("Checkpoint/restart", false);

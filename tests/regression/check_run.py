@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """Runs a vpsolve case and checks its outputs against the output contract (docs/outputs.md) and
 stored reference values.
-usage: check_run.py --np N --dir OUT [--expect column=value:reltol ...] [--steps S,S,...] -- vpsolve args...
---steps: the steps of the diagnostics.csv rows, exactly."""
+usage: check_run.py --np N --dir OUT [--expect [file.csv:]column=value:reltol ...] [--steps S,S,...] -- vpsolve args...
+--expect: a value of the last row of diagnostics.csv (or of the named CSV file of the run).
+--steps: the steps of the diagnostics.csv rows, exactly.
+A run with collapse.csv (-collapse_monitor) must also have written deposit.csv, whose two bins
+next to the back wall hold the last row's height_back (the same spheres)."""
 import argparse, csv, glob, os, shutil, subprocess, sys
 import xml.etree.ElementTree as ET
 import h5py
@@ -43,6 +46,24 @@ def check_fields(out):
     return len(files)
 
 
+def read_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def check_collapse(out):
+    path = os.path.join(out, "collapse.csv")
+    if not os.path.exists(path):
+        return
+    last = read_rows(path)[-1]
+    deposit = read_rows(os.path.join(out, "deposit.csv"))
+    back = max(float(r["h"]) for r in deposit[:2])
+    if back != float(last["height_back"]):
+        fail("deposit.csv next to the back wall %.10g, collapse.csv height_back %s" % (back, last["height_back"]))
+    if not float(last["front"]) >= float(last["front99"]) > 0:
+        fail("collapse.csv: front %s below its 99th percentile %s" % (last["front"], last["front99"]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--np", type=int, default=1)
@@ -58,8 +79,7 @@ def main():
     if r.returncode != 0:
         print(r.stdout, r.stderr)
         fail("vpsolve exited with %d" % r.returncode)
-    with open(os.path.join(a.dir, "diagnostics.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = read_rows(os.path.join(a.dir, "diagnostics.csv"))
     if list(rows[0].keys())[:len(CONTRACT)] != CONTRACT:
         fail("diagnostics.csv header %s" % list(rows[0].keys()))
     last = rows[-1]
@@ -68,10 +88,15 @@ def main():
         if steps != [int(x) for x in a.steps.split(",")]:
             fail("diagnostics.csv rows at steps %s, expected %s" % (steps, a.steps))
     n = check_fields(a.dir)
+    check_collapse(a.dir)
     for e in a.expect:
         col, rest = e.split("=")
         value, tol = (float(x) for x in rest.split(":"))
-        got = float(last[col])
+        row = last
+        if ":" in col:
+            name, col = col.split(":")
+            row = read_rows(os.path.join(a.dir, name))[-1]
+        got = float(row[col])
         rel = abs(got - value) / max(abs(value), 1e-300)
         print("%s = %.10g (reference %.10g, relative difference %.2e, tolerance %.0e)" % (col, got, value, rel, tol))
         if rel > tol:

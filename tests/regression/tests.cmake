@@ -129,6 +129,8 @@ vp_bad_input(lub_unknown_model 1 "option -lub_model: unknown value 'stokes' \\(v
 
 # --- Particles in a fluid (coupling) ----------------------------------------------------------
 set(VP_ONE_SPHERE -particle_position 0.5,0.5,0.5 -particle_radius 0.1 -contact_tc 0.01)
+vp_bad_input(collapse_monitor_no_particles 1 "option -collapse_monitor: measures a granular collapse: the case has no particles"
+             -collapse_monitor)
 vp_bad_input(penalization_mask 1 "option -penalization_mask: unknown value 'box' \\(valid: smooth, sharp\\)"
              ${VP_ONE_SPHERE} -penalization_mask box)
 vp_bad_input(penalization_lambda 1 "option -penalization_lambda: must be >= 0" ${VP_ONE_SPHERE} -penalization_lambda -1)
@@ -154,10 +156,15 @@ foreach(kind loose dense)
   if(kind STREQUAL "dense")
     set(file dam_break_dense)
   endif()
-  set(ke_loose 7.9216296e-09 2.854582875e-09)
-  set(ke_dense 4.15464856e-09 1.473696819e-09)
+  # kinetic energies (fluid, grains) and the run's own collapse measurements (front, 99th-percentile
+  # front, back-wall height: collapse.csv) after 20 steps
+  set(ke_loose 7.9216296e-09 2.854582875e-09 0.01907296694 0.01904649327 0.01622679967)
+  set(ke_dense 4.15464856e-09 1.473696819e-09 0.0190548869 0.01903888202 0.01457407556)
   list(GET ke_${kind} 0 fluid)
   list(GET ke_${kind} 1 grains)
+  list(GET ke_${kind} 2 front)
+  list(GET ke_${kind} 3 front99)
+  list(GET ke_${kind} 4 back)
   set(ranks 2)
   if(kind STREQUAL "loose")
     set(ranks 1 2 3)
@@ -168,6 +175,8 @@ foreach(kind loose dense)
       set(name ${file}_np${np})
     endif()
     vp_case_run(${name} ${np} --expect kinetic_energy=${fluid}:1e-6 --expect particle_kinetic_energy=${grains}:1e-6
+                --expect collapse.csv:front=${front}:1e-6 --expect collapse.csv:front99=${front99}:1e-6
+                --expect collapse.csv:height_back=${back}:1e-6
                 -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/${file}.opts
                 -particles_file ${CMAKE_SOURCE_DIR}/cases/data/column_${kind}.csv -grid_n 192,12,60 ${VP_SHORT})
   endforeach()

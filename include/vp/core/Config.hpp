@@ -57,6 +57,7 @@ struct OutputConfig {
   bool files = true;                       // false: no files at all (library use in tests)
   bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
   std::vector<Vec3> probes;                // -probe x,y,z,...: pressure probes (probes.csv) [m]
+  bool collapse = false;                   // -collapse_monitor: collapse.csv and deposit.csv
 };
 
 // Checks after every step that stop a run going wrong (docs/robustness.md).

@@ -1,0 +1,48 @@
+#pragma once
+// The measurements of a granular column collapse (a dam break), taken by the run itself
+// (-collapse_monitor; docs/dam_break.md): the column stands against the low-x wall, flows along +x
+// and gravity points along -z. collapse.csv gets one row per time-series step (-series_every):
+//   front      the rightmost sphere surface, max(x + r)
+//   front99    the 99th percentile of x + r (numpy's linear rule), the front without stray spheres
+//   height_back the highest sphere top, max(z + r), of the spheres whose centre lies within two
+//              mean diameters of the low-x wall (the column height at the back wall)
+// and deposit.csv at the end of the run: the highest sphere top per bin of one mean diameter along
+// x, from the low-x wall (the deposit profile h(x)). The owned spheres' x, z and r are gathered on
+// rank 0 (a few numbers per sphere), so the values do not depend on the rank count.
+#include "vp/grid/Grid.hpp"
+#include "vp/io/CsvWriter.hpp"
+#include "vp/particles/ParticleStore.hpp"
+#include <memory>
+#include <string>
+
+namespace vp {
+
+struct CollapseState {
+  double front = 0, front99 = 0, heightBack = 0;
+};
+
+class CollapseMonitor {
+public:
+  // resumeAfter >= 0 (a restart): continue collapse.csv after the row of that time.
+  CollapseMonitor(const Grid& grid, const std::string& dir, double resumeAfter = -1);
+
+  // The measurements (on every rank). Collective.
+  CollapseState measure(const ParticleStore& p) const;
+  // measure() and a row of collapse.csv. Collective.
+  void record(double time, const ParticleStore& p);
+  // deposit.csv: x of the bin centre, h. Collective.
+  void writeDeposit(const ParticleStore& p) const;
+
+private:
+  struct Spheres {
+    std::vector<double> x, z, r;  // all spheres, rank 0 only
+    double diameter = 0;          // mean diameter
+  };
+  Spheres gather(const ParticleStore& p) const;
+
+  const Grid& grid_;
+  std::string dir_;
+  std::unique_ptr<CsvWriter> csv_;
+};
+
+} // namespace vp
