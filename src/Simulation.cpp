@@ -58,7 +58,7 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
   else if (particleCfg_.any())
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
   if (cfg_.output.collapse && !dem_) failOption("-collapse_monitor", "measures a granular collapse: the case has no particles");
-  fluid_ = std::make_unique<Projection>(grid_, cfg_);
+  fluid_ = std::make_unique<Projection>(grid_, cfg_, penalization_ && rc.penalization.weightedProjection);
   if (restart)
     restore(*restart);
   else {
@@ -260,8 +260,11 @@ void Simulation::advance(double dt)
       // flow through the particles (docs/coupling.md).
       buildMask(dt);
       last_ = fluid_->predict(dt, penalization_->theta(), penalization_->thetaUs());
-      penalize();
+      // The weighted projection completes the implicit penalized step: its force is taken from
+      // u^{n+1} (docs/coupling.md); the plain one leaves the pressure impulse to the momentum term.
+      if (!fluid_->weighted()) penalize();
       last_.pressureIterations = fluid_->project(dt);
+      if (fluid_->weighted()) penalize();
       hydroForce(dt);
     } else {
       last_ = fluid_->step(dt);

@@ -18,6 +18,11 @@ PenalizationConfig PenalizationConfig::read()
                     "Penalization coefficient lambda (1/s); 0: max(400 nu / h^2, 20 / dt), a penetration length of at most h/20 "
                     "and the fluid inside a particle following it to 5 % within every step");
   c.width = o.real("-penalization_width", c.width, "Width of the smooth mask (cells)");
+  c.weightedProjection = o.choice("-penalization_projection", {"plain", "weighted"}, 0,
+                                  "Pressure projection of a penalized step: plain (the constant-coefficient Poisson equation, any "
+                                  "pressure solver) or weighted (div(grad psi / (1 + chi lambda dt)): the solid resists the "
+                                  "correction as it resists the flow, so the pressure in a closing gap builds within the step; an "
+                                  "iterative pressure solver, the operator rebuilt every step; docs/coupling.md)") == 1;
   return c;
 }
 

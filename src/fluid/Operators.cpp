@@ -82,7 +82,7 @@ void divergence(const Grid& g, PetscScalar**** u, PetscScalar*** div)
     }
 }
 
-void addGradient(const Grid& g, PetscScalar*** phi, double scale, PetscScalar**** out)
+void addGradient(const Grid& g, PetscScalar*** phi, double scale, PetscScalar**** out, PetscScalar**** weight)
 {
   const double s[3] = {scale / g.h(0), scale / g.h(1), scale / g.h(2)};
   const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), nx = g.end(0) - i0;
@@ -91,14 +91,18 @@ void addGradient(const Grid& g, PetscScalar*** phi, double scale, PetscScalar***
   const PetscInt iFree = isFixedFace(g, 0, i0) ? 1 : 0;
   for (PetscInt k = k0; k < g.end(2); ++k)
     for (PetscInt j = j0; j < g.end(1); ++j) {
-      const bool free1 = !isFixedFace(g, 1, j), free2 = !isFixedFace(g, 2, k);
       const PetscScalar* p = &phi[k][j][i0];
       PetscScalar* o = &out[k][j][i0][0];
-      for (PetscInt i = iFree; i < nx; ++i) o[3 * i] += s[0] * (p[i] - p[i - 1]);
-      if (free1)
-        for (PetscInt i = 0; i < nx; ++i) o[3 * i + 1] += s[1] * (p[i] - p[i - py]);
-      if (free2)
-        for (PetscInt i = 0; i < nx; ++i) o[3 * i + 2] += s[2] * (p[i] - p[i - pz]);
+      const PetscScalar* w = weight ? &weight[k][j][i0][0] : nullptr;
+      auto add = [&](int c, std::ptrdiff_t stride, PetscInt from) {
+        if (w)
+          for (PetscInt i = from; i < nx; ++i) o[3 * i + c] += s[c] * w[3 * i + c] * (p[i] - p[i - stride]);
+        else
+          for (PetscInt i = from; i < nx; ++i) o[3 * i + c] += s[c] * (p[i] - p[i - stride]);
+      };
+      add(0, 1, iFree);
+      if (!isFixedFace(g, 1, j)) add(1, py, 0);
+      if (!isFixedFace(g, 2, k)) add(2, pz, 0);
     }
 }
 

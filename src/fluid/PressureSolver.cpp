@@ -3,6 +3,7 @@
 #include "vp/core/OptionDefaults.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/fluid/FftPoisson.hpp"
+#include "vp/grid/FieldArray.hpp"
 #include <algorithm>
 #include <string>
 
@@ -60,7 +61,9 @@ PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
 }
 
 // Number of multigrid levels: halve while every axis stays even, with at least 2 cells and 1 cell per rank.
-int mgLevels(const Grid& g)
+// Halves the grid while every axis stays even and keeps two cells per rank; coarse[] gets the
+// coarsest grid.
+int mgLevels(const Grid& g, PetscInt coarse[3])
 {
   PetscInt procs[3];
   VP_CALL(DMDAGetInfo(g.cellDM(), nullptr, nullptr, nullptr, nullptr, &procs[0], &procs[1], &procs[2], nullptr,
@@ -74,12 +77,13 @@ int mgLevels(const Grid& g)
     for (int d = 0; d < 3; ++d) n[d] /= 2;
     ++levels;
   }
+  for (int d = 0; d < 3; ++d) coarse[d] = n[d];
   return levels;
 }
 
 } // namespace
 
-PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
+PressureSolver::PressureSolver(const Grid& grid, bool weighted) : grid_(grid)
 {
   const SolverOptions options = readSolverOptions();
   const std::string& pcType = options.pressurePc;
@@ -96,6 +100,9 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
   }
   // fft is an exact inverse: one application (preonly) is the solve.
   const bool direct = !options.pressureKsp.empty() ? options.pressureKsp == KSPPREONLY : pcType == "fft";
+  if (weighted && direct)
+    failOption("-penalization_projection", "weighted needs an iterative pressure solve: the direct fft solve is exact for the "
+                                           "constant-coefficient equation only (use -pressure_pc_type hypre, pfmg or mg)");
   setOptionDefault("-pressure_ksp_type", direct ? KSPPREONLY : KSPCG);
   if (!direct) {
     setOptionDefault("-pressure_ksp_norm_type", "unpreconditioned");
@@ -118,12 +125,27 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
       setOptionDefault("-pressure_pc_hypre_boomeramg_strong_threshold", "0.6");
       setOptionDefault("-pressure_pc_hypre_boomeramg_agg_nl", "2");
       setOptionDefault("-pressure_pc_hypre_boomeramg_agg_num_paths", "2");
-      setOptionDefault("-pressure_pc_hypre_boomeramg_relax_type_all", "Chebyshev");
+      // The weighted operator's coefficients jump by the penalization's 1 + lambda dt: there the
+      // Chebyshev smoother's eigenvalue estimate fails (an indefinite preconditioner, measured);
+      // symmetric Gauss-Seidel (hybrid across ranks) keeps CG valid.
+      setOptionDefault("-pressure_pc_hypre_boomeramg_relax_type_all", weighted ? "symmetric-SOR/Jacobi" : "Chebyshev");
     }
   } else if (pcType == "mg") {
     // Q0 transfer with rediscretised coarse operators; Galerkin with Q0 degrades convergence.
     VP_CALL(DMDASetInterpolationType(grid.cellDM(), DMDA_Q0));
-    setOptionDefault("-pressure_pc_mg_levels", std::to_string(mgLevels(grid)).c_str());
+    PetscInt coarse[3];
+    setOptionDefault("-pressure_pc_mg_levels", std::to_string(mgLevels(grid, coarse)).c_str());
+    // The default coarse solve is a dense SVD: beyond a few thousand cells it runs for minutes.
+    const PetscInt coarseCells = coarse[0] * coarse[1] * coarse[2], maxCoarseCells = 2000;
+    VP_CALL(PetscOptionsHasName(nullptr, "pressure_", "-mg_coarse_pc_type", &set));
+    if (!set && coarseCells > maxCoarseCells)
+      failOption("-pressure_pc_type", "mg halves the grid while every axis is even: " + std::to_string(grid.n(0)) + " x " +
+                                          std::to_string(grid.n(1)) + " x " + std::to_string(grid.n(2)) + " stops at " +
+                                          std::to_string(coarse[0]) + " x " + std::to_string(coarse[1]) + " x " +
+                                          std::to_string(coarse[2]) + " = " + std::to_string(coarseCells) +
+                                          " cells, too many for its dense coarse solve (at most " +
+                                          std::to_string(maxCoarseCells) +
+                                          "); choose -grid_n with more factors of 2 or -pressure_pc_type hypre or pfmg");
     // One symmetric SOR sweep as smoother: half the iterations of the default Chebyshev/SOR.
     setOptionDefault("-pressure_mg_levels_ksp_type", "richardson");
     setOptionDefault("-pressure_mg_levels_pc_type", "sor");
@@ -174,12 +196,57 @@ PressureSolver::PressureSolver(const Grid& grid) : grid_(grid)
   }
   VP_CALL(KSPSetUp(ksp_));
   VP_CALL(MatNullSpaceCreate(grid.comm(), PETSC_TRUE, 0, nullptr, &nullSpace_));
-  if (!direct_ && options.pressureGuesses > 0)
+  // The fitted start keeps products with an operator that the weighted projection rebuilds every step.
+  if (!direct_ && !weighted && options.pressureGuesses > 0)
     history_ = std::make_unique<SolutionHistory>(matrix(), work_, options.pressureGuesses);
+}
+
+void PressureSolver::setFaceWeights(Vec betaLocal)
+{
+  const Grid& g = grid_;
+  if (!weightedA_) {
+    VP_CALL(DMCreateMatrix(g.cellDM(), &weightedA_));
+    VP_CALL(KSPSetDMActive(ksp_, PETSC_FALSE));
+  }
+  VP_CALL(MatZeroEntries(weightedA_));
+  double w[3];
+  for (int d = 0; d < 3; ++d) w[d] = g.cellVolume() / (g.h(d) * g.h(d));
+  {
+    FaceArray beta(g.faceDM(), betaLocal, true);
+    for (PetscInt k = g.start(2); k < g.end(2); ++k)
+      for (PetscInt j = g.start(1); j < g.end(1); ++j)
+        for (PetscInt i = g.start(0); i < g.end(0); ++i) {
+          MatStencil row = {k, j, i, 0}, col[7];
+          PetscScalar v[7];
+          int n = 0;
+          double diag = 0;
+          for (int d = 0; d < 3; ++d)
+            for (int s = -1; s <= 1; s += 2) {
+              PetscInt q[3] = {i, j, k};
+              q[d] += s;
+              if (!g.periodic(d) && (q[d] < 0 || q[d] >= g.n(d))) continue;  // wall: zero flux
+              if (g.n(d) == 1) continue;
+              PetscInt f[3] = {i, j, k};  // the face between the cell and q
+              if (s > 0) f[d] += 1;
+              const double c = w[d] * beta.a[f[2]][f[1]][f[0]][d];
+              col[n] = {q[2], q[1], q[0], 0};
+              v[n++] = -c;
+              diag += c;
+            }
+          col[n] = row;
+          v[n++] = diag;
+          VP_CALL(MatSetValuesStencil(weightedA_, 1, &row, n, col, v, INSERT_VALUES));
+        }
+  }
+  VP_CALL(MatAssemblyBegin(weightedA_, MAT_FINAL_ASSEMBLY));
+  VP_CALL(MatAssemblyEnd(weightedA_, MAT_FINAL_ASSEMBLY));
+  VP_CALL(MatSetNullSpace(weightedA_, nullSpace_));
+  VP_CALL(KSPSetOperators(ksp_, weightedA_, weightedA_));
 }
 
 PressureSolver::~PressureSolver()
 {
+  MatDestroy(&weightedA_);
   VecDestroy(&work_);
   MatNullSpaceDestroy(&nullSpace_);
   KSPDestroy(&ksp_);

@@ -20,9 +20,9 @@ double norm2(Vec v)
 
 } // namespace
 
-Projection::Projection(const Grid& grid, const Config& cfg)
+Projection::Projection(const Grid& grid, const Config& cfg, bool weighted)
   : grid_(grid), bc_(cfg.bc), rho_(cfg.fluid.rho), nu_(cfg.fluid.nu()), force_(cfg.fluid.bodyForce),
-    diffusion_(grid, cfg.bc), pressure_(grid)
+    diffusion_(grid, cfg.bc), pressure_(grid, weighted), weighted_(weighted)
 {
   DM f = grid.faceDM(), c = grid.cellDM();
   for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_}) VP_CALL(DMCreateGlobalVector(f, v));
@@ -31,11 +31,12 @@ Projection::Projection(const Grid& grid, const Config& cfg)
   VP_CALL(DMCreateLocalVector(c, &pL_));
   VP_CALL(DMCreateLocalVector(c, &psiL_));
   for (Vec v : {u_, N_, Nold_, rhs_, du_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
+  if (weighted_) VP_CALL(DMCreateLocalVector(f, &betaL_));
 }
 
 Projection::~Projection()
 {
-  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_}) VecDestroy(v);
+  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_, &betaL_}) VecDestroy(v);
 }
 
 StepStats Projection::step(double dt)
@@ -49,6 +50,7 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
 {
   const Grid& g = grid_;
   StepStats st;
+  theta_ = theta;
   double uNorm = norm2(u_);
   {
     StageScope stage(Stage::Advection);
@@ -117,13 +119,28 @@ int Projection::project(double dt)
       ops::divergence(g, u.a, div.a);
     }
     VP_CALL(VecScale(div_, -1.0));
+    const bool weighted = weighted_ && theta_;
+    if (weighted) {
+      // beta = 1/(1 + theta): the correction the penalized momentum equation allows on each face.
+      VP_CALL(DMGlobalToLocal(g.faceDM(), theta_, INSERT_VALUES, betaL_));
+      PetscInt n;
+      VP_CALL(VecGetLocalSize(betaL_, &n));
+      WriteValues b(betaL_);
+      for (PetscInt q = 0; q < n; ++q) b[q] = 1 / (1 + b[q]);
+    }
+    if (weighted) pressure_.setFaceWeights(betaL_);
     double hmin = std::min({g.h(0), g.h(1), g.h(2)});
     iterations = pressure_.solve(div_, psi_, 1e-13 * norm2(u_) / hmin);
     VP_CALL(DMGlobalToLocal(g.cellDM(), psi_, INSERT_VALUES, psiL_));
     CellArray psi(g.cellDM(), psiL_);
     fillCellGhosts(g, psi.a);
     FaceArray u(g.faceDM(), u_);
-    ops::addGradient(g, psi.a, -1.0, u.a);
+    if (weighted) {
+      FaceArray beta(g.faceDM(), betaL_, true);
+      ops::addGradient(g, psi.a, -1.0, u.a, beta.a);
+    } else {
+      ops::addGradient(g, psi.a, -1.0, u.a);
+    }
     VP_CALL(VecAXPY(p_, rho_ / dt, psi_));
   }
   return iterations;

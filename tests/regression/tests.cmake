@@ -135,6 +135,12 @@ vp_bad_input(penalization_mask 1 "option -penalization_mask: unknown value 'box'
              ${VP_ONE_SPHERE} -penalization_mask box)
 vp_bad_input(penalization_lambda 1 "option -penalization_lambda: must be >= 0" ${VP_ONE_SPHERE} -penalization_lambda -1)
 vp_bad_input(penalization_width 1 "option -penalization_width: must be in \\(0, 4\\] cells, got 9" ${VP_ONE_SPHERE} -penalization_width 9)
+vp_bad_input(penalization_projection 1 "option -penalization_projection: unknown value 'exact' \\(valid: plain, weighted\\)"
+             ${VP_ONE_SPHERE} -penalization_projection exact)
+vp_bad_input(weighted_projection_direct_fft 1 "option -penalization_projection: weighted needs an iterative pressure solve"
+             ${VP_ONE_SPHERE} -penalization_projection weighted -pressure_pc_type fft)
+vp_bad_input(mg_coarse_grid 1 "option -pressure_pc_type: mg halves the grid while every axis is even: 36 x 36 x 42 stops at 18 x 18 x 21"
+             ${VP_ONE_SPHERE} -pressure_pc_type mg -grid_n 36,36,42)
 # The falling sphere, coarse and short, on 2 ranks: outputs (fields with chi, particles) and values.
 vp_case_run(falling_sphere 2 --expect kinetic_energy=1.116425889e-05:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 20

@@ -18,6 +18,7 @@ struct PenalizationConfig {
   enum class Mask { Smooth, Sharp } mask = Mask::Smooth;
   double lambda = 0;  // [1/s]; 0: max(400 nu / h^2, 20 / dt), set per step by build()
   double width = 1;   // smoothing width in cells
+  bool weightedProjection = false;  // -penalization_projection weighted (Projection.hpp)
 
   static PenalizationConfig read();  // -penalization_*
   void validate() const;             // throws InputError

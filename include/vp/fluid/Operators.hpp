@@ -14,8 +14,10 @@ void advectionAndLaplacian(const Grid& grid, PetscScalar**** u, PetscScalar**** 
 // div u at every owned cell.
 void divergence(const Grid& grid, PetscScalar**** u, PetscScalar*** div);
 
-// out_c += scale * d(phi)/dx_c at every owned, free face (phi local, ghosts filled).
-void addGradient(const Grid& grid, PetscScalar*** phi, double scale, PetscScalar**** out);
+// out_c += scale * weight_c * d(phi)/dx_c at every owned, free face (phi local, ghosts filled;
+// weight: a face field, 1 when null).
+void addGradient(const Grid& grid, PetscScalar*** phi, double scale, PetscScalar**** out,
+                 PetscScalar**** weight = nullptr);
 
 // Velocity at cell centres (average of the two faces of each cell) for output.
 void faceToCentre(const Grid& grid, PetscScalar**** u, PetscScalar**** centre);

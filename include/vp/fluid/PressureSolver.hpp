@@ -17,7 +17,8 @@ namespace vp {
 
 class PressureSolver {
 public:
-  explicit PressureSolver(const Grid& grid);
+  // weighted: the operator will come from setFaceWeights (an iterative solver is required).
+  explicit PressureSolver(const Grid& grid, bool weighted = false);
   ~PressureSolver();
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;
@@ -29,6 +30,10 @@ public:
   // The solutions the next starts are fitted from (null for a direct solve or -pressure_guesses 0).
   SolutionHistory* history() const { return history_.get(); }
   Mat matrix() const;  // A = -V lap_h
+  // From now on A = -V div(beta grad) with beta a face field (faceDM local vector, ghosts valid):
+  // the weighted projection of the penalized step (Projection.hpp). Assembles A every call (the
+  // mask moves), and the preconditioner is set up again for it.
+  void setFaceWeights(Vec betaLocal);
   KSP ksp() const { return ksp_; }
 
   struct Box {
@@ -44,6 +49,7 @@ private:
   std::unique_ptr<SolutionHistory> history_;
   bool direct_ = false;  // -pressure_ksp_type preonly (e.g. with the exact fft PC): no initial guess
   Box box_;
+  Mat weightedA_ = nullptr;  // setFaceWeights
 };
 
 } // namespace vp

@@ -4,6 +4,11 @@
 //   A psi = -div u*  (A = -lap_h),  u = u* - grad psi,  p^{n+1} = p^n + rho psi / dt
 // AB2 with variable steps (Euler on the first step), Crank-Nicolson diffusion. The pressure is the
 // dynamic pressure: gravity on a constant-density fluid is balanced by its hydrostatic part.
+// Weighted (with particles, -penalization_projection weighted): the predictor's implicit
+// penalization (1 + theta) du = ... is completed by -div(beta grad psi) = -div u*, u = u* - beta grad
+// psi, beta = 1/(1 + theta) per face: together they solve the penalized step with the new pressure
+// (the plain projection corrects the solid's faces as freely as the fluid's, and the next predictor
+// undoes it there).
 #include "vp/core/Config.hpp"
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/fluid/Operators.hpp"
@@ -18,7 +23,8 @@ struct StepStats {
 
 class Projection {
 public:
-  Projection(const Grid& grid, const Config& cfg);
+  // weighted: the projection of the penalized step (predict's theta), -penalization_projection weighted.
+  Projection(const Grid& grid, const Config& cfg, bool weighted = false);
   ~Projection();
   Projection(const Projection&) = delete;
   Projection& operator=(const Projection&) = delete;
@@ -39,6 +45,7 @@ public:
   const ops::FieldStats& stats() const { return stats_; }
 
   Vec velocity() const { return u_; }      // faceDM global
+  bool weighted() const { return weighted_; }  // -penalization_projection weighted
   Vec pressure() const { return p_; }      // cellDM global
   Vec velocityLocal() const { return uL_; } // faceDM local, ghosts valid after finishStep()
   const Grid& grid() const { return grid_; }
@@ -61,7 +68,9 @@ private:
   const Vec3 force_;
   DiffusionSolver diffusion_;
   PressureSolver pressure_;
+  const bool weighted_;
   Vec u_, p_, uL_, pL_, N_, Nold_, rhs_, du_, div_, psi_, psiL_;
+  Vec theta_ = nullptr, betaL_ = nullptr;  // weighted: predict's theta, 1/(1 + theta) with ghosts
   double dtOld_ = 0;
   ops::FieldStats stats_;
 };
