@@ -147,13 +147,13 @@ vp_case_run(falling_sphere 2 --expect kinetic_energy=1.116425889e-05:1e-6
             -output_every 10 -monitor_every 0)
 # The collision cases, coarse (d/dx 4) and short, on 2 ranks: they run, write the contracted outputs
 # and reproduce stored values (the physics is in scripts/validate collisions).
-vp_case_run(restitution 2 --expect kinetic_energy=4.744793756e-06:1e-6 --expect particle_kinetic_energy=1.301951321e-05:1e-6
+vp_case_run(restitution 2 --expect kinetic_energy=4.736483616e-06:1e-6 --expect particle_kinetic_energy=1.298304698e-05:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -grid_n 24,24,28 ${VP_SHORT})
 # The shipped restitution case through its impact (t = 0.022 s, contact at 0.018 s) at its own grid:
 # it must run within its own health limits (the stretched contact's overlap).
-vp_case_run(restitution_impact 2 --expect particle_kinetic_energy=8.436581374e-06:1e-6
+vp_case_run(restitution_impact 2 --expect particle_kinetic_energy=7.665688888e-06:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -time_final 0.022 -output_dt 0 -monitor_every 0)
-vp_case_run(oblique_collision 2 --expect kinetic_energy=0.000253480445:1e-6 --expect particle_kinetic_energy=0.0005763584333:1e-6
+vp_case_run(oblique_collision 2 --expect kinetic_energy=0.0002518824062:1e-6 --expect particle_kinetic_energy=0.0005773816919:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 ${VP_SHORT})
 # The immersed dam breaks, coarse (d/dx 3) and short, on 2 ranks: outputs and stored values; the
 # loose one also on 1 and 3 ranks against the same values (results independent of the rank count).
@@ -187,6 +187,15 @@ foreach(kind loose dense)
                 -particles_file ${CMAKE_SOURCE_DIR}/cases/data/column_${kind}.csv -grid_n 192,12,60 ${VP_SHORT})
   endforeach()
 endforeach()
+# A sphere held near a wall in Stokes flow until steady, on 2 ranks: the fitted pressure start leaves
+# a residual near round-off where CG broke down at step 91 (DIVERGED_INDEFINITE_PC); the solve must
+# restart from zero and the run reach its end with the flow of a run without fitted starts.
+vp_case_run(steady_stokes_fitted_start 2 --expect kinetic_energy=9.949053021e-08:1e-6
+            -- $<TARGET_FILE:vpsolve> -grid_n 32,32,32 -grid_lo 0,0,0 -grid_hi 4,4,4 -fluid_rho 1 -fluid_mu 1
+            -bc_xlo periodic -bc_xhi periodic -bc_ylo periodic -bc_yhi periodic -particle_radius 0.5 -particle_density 1
+            -particle_position 2,2,0.50525 -particle_fixed -particle_velocity 0,0,-3.3333333333333e-4 -contact_tc 1
+            -contact_roughness 1e-4 -lub_model none -time_dt 0.0078125 -time_final 0.75 -output_every 0 -output_dt 0
+            -monitor_every 0)
 # The lubrication correction's calibration at d/dx 8 for one gap (docs/collisions.md).
 add_test(NAME calibration_normal_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_calibration.py)
 set_tests_properties(calibration_normal_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
