@@ -132,7 +132,9 @@ void Simulation::compareSetup(const CheckpointReader& cp) const
 void Simulation::restore(const CheckpointReader& cp)
 {
   const RunState& r = cp.run();
-  cp.loadFluid(fluidState());
+  FluidState f = fluidState();
+  f.velocityIncrementOld = fluid_->velocityIncrementOld();
+  fluid_->setIncrements(cp.loadFluid(f) ? 2 : r.dtOld > 0 ? 1 : 0);
   if (SolutionHistory* h = fluid_->pressureSolver().history()) {
     // The newest stored solutions, re-added in order: the history is then the uninterrupted run's.
     std::vector<Vec> stored = cp.loadPressureHistory(fluid_->pressure());
@@ -155,7 +157,7 @@ void Simulation::restore(const CheckpointReader& cp)
 FluidState Simulation::fluidState() const
 {
   FluidState f{fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement(),
-               fluid_->velocityIncrement(), {}};
+               fluid_->velocityIncrement(), fluid_->increments() == 2 ? fluid_->velocityIncrementOld() : nullptr, {}};
   if (const SolutionHistory* h = fluid_->pressureSolver().history())
     for (int i = 0; i < h->size(); ++i) f.pressureHistory.push_back(h->solution(i));
   return f;

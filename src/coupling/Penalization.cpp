@@ -22,7 +22,8 @@ PenalizationConfig PenalizationConfig::read()
                                   "Pressure projection of a penalized step: plain (the constant-coefficient Poisson equation, any "
                                   "pressure solver) or weighted (div(grad psi / (1 + chi lambda dt)): the solid resists the "
                                   "correction as it resists the flow, so the pressure in a closing gap builds within the step; an "
-                                  "iterative pressure solver, the operator rebuilt every step; docs/coupling.md)") == 1;
+                                  "iterative pressure solver, the operator rebuilt every step: -pressure_pc_type pfmg sets up cheaply; "
+                                  "docs/coupling.md)") == 1;
   return c;
 }
 

@@ -25,18 +25,18 @@ Projection::Projection(const Grid& grid, const Config& cfg, bool weighted)
     diffusion_(grid, cfg.bc), pressure_(grid, weighted), weighted_(weighted)
 {
   DM f = grid.faceDM(), c = grid.cellDM();
-  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_}) VP_CALL(DMCreateGlobalVector(f, v));
+  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &duOld_}) VP_CALL(DMCreateGlobalVector(f, v));
   for (Vec* v : {&p_, &div_, &psi_}) VP_CALL(DMCreateGlobalVector(c, v));
   VP_CALL(DMCreateLocalVector(f, &uL_));
   VP_CALL(DMCreateLocalVector(c, &pL_));
   VP_CALL(DMCreateLocalVector(c, &psiL_));
-  for (Vec v : {u_, N_, Nold_, rhs_, du_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
+  for (Vec v : {u_, N_, Nold_, rhs_, du_, duOld_, p_, div_, psi_}) VP_CALL(VecSet(v, 0));
   if (weighted_) VP_CALL(DMCreateLocalVector(f, &betaL_));
 }
 
 Projection::~Projection()
 {
-  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_, &betaL_}) VecDestroy(v);
+  for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &duOld_, &p_, &div_, &psi_, &uL_, &pL_, &psiL_, &betaL_}) VecDestroy(v);
 }
 
 StepStats Projection::step(double dt)
@@ -95,9 +95,20 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
       WriteValues r(rhs_);
       for (PetscInt i = 0; i < n; ++i) r[i] += ts[i] - th[i] * u[i];
     }
-    // The last increment, rescaled to this step, starts the solve (du is about dt du/dt).
-    if (dtOld_ > 0 && dt != dtOld_) VP_CALL(VecScale(du_, dt / dtOld_));
+    // The last two increments, rescaled to this step (du is about dt du/dt), extrapolated start the
+    // solve: 13 % fewer iterations than the last one alone on the 64^3 cavity (docs/fluid.md).
+    if (dtOld_ > 0 && dt != dtOld_) {
+      VP_CALL(VecScale(du_, dt / dtOld_));
+      VP_CALL(VecScale(duOld_, dt / dtOld_));
+    }
+    if (increments_ == 2) {
+      VP_CALL(VecAXPBY(duOld_, 2.0, -1.0, du_));  // duOld = 2 du - duOld
+      std::swap(du_, duOld_);                      // du = the extrapolation, duOld = the last increment
+    } else {
+      VP_CALL(VecCopy(du_, duOld_));
+    }
     st.velocityIterations = diffusion_.solve(0.5 * nu_ * dt, rhs_, du_, 1e-14 * std::max(uNorm, norm2(rhs_)), theta);
+    increments_ = std::min(increments_ + 1, 2);
     VP_CALL(VecAXPY(u_, 1.0, du_));  // u*
   }
   std::swap(N_, Nold_);

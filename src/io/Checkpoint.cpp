@@ -71,12 +71,17 @@ void unpackRun(const std::vector<double>& v, RunState& s)
   s.lastOutputStep = static_cast<int>(v[5]);
 }
 
+const char* const kIncrementOld = "velocity_increment_old";
+
 const char* const kRunAttribute = "run";  // step, time, dt_old, next_output_time, next_checkpoint_time, last_output_step
 
 std::vector<std::pair<const char*, Vec>> named(const FluidState& f)
 {
-  return {{"velocity", f.velocity}, {"pressure", f.pressure}, {"convection_old", f.convectionOld},
-          {"pressure_increment", f.pressureIncrement}, {"velocity_increment", f.velocityIncrement}};
+  std::vector<std::pair<const char*, Vec>> v = {{"velocity", f.velocity}, {"pressure", f.pressure},
+                                                {"convection_old", f.convectionOld}, {"pressure_increment", f.pressureIncrement},
+                                                {"velocity_increment", f.velocityIncrement}};
+  if (f.velocityIncrementOld) v.push_back({kIncrementOld, f.velocityIncrementOld});
+  return v;
 }
 
 std::string historyName(std::size_t i) { return "pressure_history_" + std::to_string(i); }
@@ -294,15 +299,22 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   }
 }
 
-void CheckpointReader::loadFluid(const FluidState& fluid) const
+bool CheckpointReader::loadFluid(const FluidState& fluid) const
 {
   PetscViewer viewer;
   VP_CALL(PetscViewerHDF5Open(comm_, path_.c_str(), FILE_MODE_READ, &viewer));
+  bool old = false;
   for (auto [n, v] : named(fluid)) {
+    if (v == fluid.velocityIncrementOld) {
+      PetscBool has;
+      VP_CALL(PetscViewerHDF5HasDataset(viewer, (std::string("/") + n).c_str(), &has));
+      if (!(old = has)) continue;
+    }
     VP_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(v), n));
     VP_CALL(VecLoad(v, viewer));
   }
   VP_CALL(PetscViewerDestroy(&viewer));
+  return old;
 }
 
 std::vector<Vec> CheckpointReader::loadPressureHistory(Vec like) const

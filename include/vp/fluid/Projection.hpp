@@ -55,6 +55,11 @@ public:
   Vec convectionOld() const { return Nold_; }
   Vec pressureIncrement() const { return psi_; }
   Vec velocityIncrement() const { return du_; }  // the next viscous solve's start
+  // The increment before it, and how many of the two are real solves (0-2): from two, the next
+  // solve starts from their linear extrapolation.
+  Vec velocityIncrementOld() const { return duOld_; }
+  int increments() const { return increments_; }
+  void setIncrements(int n) { increments_ = n; }
   double previousDt() const { return dtOld_; }
   void setPreviousDt(double dt) { dtOld_ = dt; }
   PressureSolver& pressureSolver() { return pressure_; }
@@ -69,9 +74,10 @@ private:
   DiffusionSolver diffusion_;
   PressureSolver pressure_;
   const bool weighted_;
-  Vec u_, p_, uL_, pL_, N_, Nold_, rhs_, du_, div_, psi_, psiL_;
+  Vec u_, p_, uL_, pL_, N_, Nold_, rhs_, du_, duOld_, div_, psi_, psiL_;
   Vec theta_ = nullptr, betaL_ = nullptr;  // weighted: predict's theta, 1/(1 + theta) with ghosts
   double dtOld_ = 0;
+  int increments_ = 0;
   ops::FieldStats stats_;
 };
 

@@ -30,6 +30,7 @@ struct RunState {
 // the pressure solutions the next solves' starts are fitted from (cellDM, oldest first; SolutionHistory.hpp).
 struct FluidState {
   Vec velocity, pressure, convectionOld, pressureIncrement, velocityIncrement;
+  Vec velocityIncrementOld;  // optional (null: not written; absent from checkpoints before 2026-11-25)
   std::vector<Vec> pressureHistory;
 };
 
@@ -63,7 +64,8 @@ public:
   // Every particle (the same list on every rank), springs attached.
   const std::vector<ParticleRecord>& particles() const { return particles_; }
   // Collective: reads the fluid vectors (not the pressure history).
-  void loadFluid(const FluidState& fluid) const;
+  // Returns whether the file held velocityIncrementOld (then loaded into it).
+  bool loadFluid(const FluidState& fluid) const;
   // Collective: the stored pressure history as new vectors like `like`, oldest first (none in
   // checkpoints older than it); the caller destroys them.
   std::vector<Vec> loadPressureHistory(Vec like) const;
