@@ -60,9 +60,8 @@ PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
   PetscFunctionReturn(0);
 }
 
-// Number of multigrid levels: halve while every axis stays even, with at least 2 cells and 1 cell per rank.
-// Halves the grid while every axis stays even and keeps two cells per rank; coarse[] gets the
-// coarsest grid.
+// Number of multigrid levels: halve while every axis stays even, with at least 2 cells and 1 cell
+// per rank; coarse[] gets the coarsest grid.
 int mgLevels(const Grid& g, PetscInt coarse[3])
 {
   PetscInt procs[3];

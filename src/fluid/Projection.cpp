@@ -139,7 +139,7 @@ int Projection::project(double dt)
       WriteValues b(betaL_);
       for (PetscInt q = 0; q < n; ++q) b[q] = 1 / (1 + b[q]);
     }
-    if (weighted) pressure_.setFaceWeights(betaL_);
+    if (weighted) pressure_.setFaceWeights(betaL_);  // after b releases the array
     double hmin = std::min({g.h(0), g.h(1), g.h(2)});
     iterations = pressure_.solve(div_, psi_, 1e-13 * norm2(u_) / hmin);
     VP_CALL(DMGlobalToLocal(g.cellDM(), psi_, INSERT_VALUES, psiL_));
