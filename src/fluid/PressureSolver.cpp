@@ -11,6 +11,42 @@ namespace vp {
 
 namespace {
 
+// Sets the rows of the cells [xs, xs + xm) of an M-cell grid to the flux balance -V div(c grad):
+// w[d] = V / h_d^2, c = coefficient(d, f) on the face f (the index of the cell above it along d).
+// Neighbours across a wall do not exist: zero flux (Neumann); a periodic axis one cell thick has no
+// gradient.
+template <class Coefficient>
+PetscErrorCode setFluxBalance(Mat B, const PetscInt M[3], const bool periodic[3], const PetscInt xs[3],
+                              const PetscInt xm[3], const double w[3], Coefficient coefficient, InsertMode mode)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = xs[2]; k < xs[2] + xm[2]; ++k)
+    for (PetscInt j = xs[1]; j < xs[1] + xm[1]; ++j)
+      for (PetscInt i = xs[0]; i < xs[0] + xm[0]; ++i) {
+        MatStencil row = {k, j, i, 0}, col[7];
+        PetscScalar v[7];
+        int n = 0;
+        double diag = 0;
+        for (int d = 0; d < 3; ++d)
+          for (int s = -1; s <= 1; s += 2) {
+            PetscInt q[3] = {i, j, k};
+            q[d] += s;
+            if (!periodic[d] && (q[d] < 0 || q[d] >= M[d])) continue;
+            if (M[d] == 1) continue;
+            PetscInt f[3] = {i, j, k};  // the face between the cell and q
+            if (s > 0) f[d] += 1;
+            const double c = w[d] * coefficient(d, f);
+            col[n] = {q[2], q[1], q[0], 0};
+            v[n++] = -c;
+            diag += c;
+          }
+        col[n] = row;
+        v[n++] = diag;
+        PetscCall(MatSetValuesStencil(B, 1, &row, n, col, v, mode));
+      }
+  PetscFunctionReturn(0);
+}
+
 // Assembles -lap_h on whatever level DM the KSP hands over (PCMG calls it on every coarse level).
 PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
 {
@@ -26,30 +62,11 @@ PetscErrorCode computeOperator(KSP ksp, Mat A, Mat B, void* ctx)
   // Scaled by the cell volume (a finite-volume flux balance): with piecewise-constant transfers
   // the rediscretised coarse operators are then within a factor 2 of the Galerkin ones.
   double h[3], w[3];
+  bool periodic[3];
   for (int d = 0; d < 3; ++d) h[d] = (box->hi[d] - box->lo[d]) / M[d];
   for (int d = 0; d < 3; ++d) w[d] = h[0] * h[1] * h[2] / (h[d] * h[d]);
-  for (PetscInt k = xs[2]; k < xs[2] + xm[2]; ++k)
-    for (PetscInt j = xs[1]; j < xs[1] + xm[1]; ++j)
-      for (PetscInt i = xs[0]; i < xs[0] + xm[0]; ++i) {
-        MatStencil row = {k, j, i, 0}, col[7];
-        PetscScalar v[7];
-        int n = 0;
-        double diag = 0;
-        for (int d = 0; d < 3; ++d)
-          for (int s = -1; s <= 1; s += 2) {
-            PetscInt q[3] = {i, j, k};
-            q[d] += s;
-            // Neighbours across a wall do not exist: zero flux (Neumann).
-            if (bt[d] != DM_BOUNDARY_PERIODIC && (q[d] < 0 || q[d] >= M[d])) continue;
-            if (M[d] == 1) continue;  // a periodic axis one cell thick has no gradient
-            col[n] = {q[2], q[1], q[0], 0};
-            v[n++] = -w[d];
-            diag += w[d];
-          }
-        col[n] = row;
-        v[n++] = diag;
-        PetscCall(MatSetValuesStencil(B, 1, &row, n, col, v, ADD_VALUES));
-      }
+  for (int d = 0; d < 3; ++d) periodic[d] = bt[d] == DM_BOUNDARY_PERIODIC;
+  PetscCall(setFluxBalance(B, M, periodic, xs, xm, w, [](int, const PetscInt*) { return 1.0; }, ADD_VALUES));
   PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
   MatNullSpace ns;
@@ -208,34 +225,15 @@ void PressureSolver::setFaceWeights(Vec betaLocal)
     VP_CALL(KSPSetDMActive(ksp_, PETSC_FALSE));
   }
   VP_CALL(MatZeroEntries(weightedA_));
+  const PetscInt M[3] = {g.n(0), g.n(1), g.n(2)}, xs[3] = {g.start(0), g.start(1), g.start(2)},
+                 xm[3] = {g.end(0) - xs[0], g.end(1) - xs[1], g.end(2) - xs[2]};
+  const bool periodic[3] = {g.periodic(0), g.periodic(1), g.periodic(2)};
   double w[3];
   for (int d = 0; d < 3; ++d) w[d] = g.cellVolume() / (g.h(d) * g.h(d));
   {
     FaceArray beta(g.faceDM(), betaLocal, true);
-    for (PetscInt k = g.start(2); k < g.end(2); ++k)
-      for (PetscInt j = g.start(1); j < g.end(1); ++j)
-        for (PetscInt i = g.start(0); i < g.end(0); ++i) {
-          MatStencil row = {k, j, i, 0}, col[7];
-          PetscScalar v[7];
-          int n = 0;
-          double diag = 0;
-          for (int d = 0; d < 3; ++d)
-            for (int s = -1; s <= 1; s += 2) {
-              PetscInt q[3] = {i, j, k};
-              q[d] += s;
-              if (!g.periodic(d) && (q[d] < 0 || q[d] >= g.n(d))) continue;  // wall: zero flux
-              if (g.n(d) == 1) continue;
-              PetscInt f[3] = {i, j, k};  // the face between the cell and q
-              if (s > 0) f[d] += 1;
-              const double c = w[d] * beta.a[f[2]][f[1]][f[0]][d];
-              col[n] = {q[2], q[1], q[0], 0};
-              v[n++] = -c;
-              diag += c;
-            }
-          col[n] = row;
-          v[n++] = diag;
-          VP_CALL(MatSetValuesStencil(weightedA_, 1, &row, n, col, v, INSERT_VALUES));
-        }
+    VP_CALL(setFluxBalance(weightedA_, M, periodic, xs, xm, w,
+                           [&](int d, const PetscInt* f) { return beta.a[f[2]][f[1]][f[0]][d]; }, INSERT_VALUES));
   }
   VP_CALL(MatAssemblyBegin(weightedA_, MAT_FINAL_ASSEMBLY));
   VP_CALL(MatAssemblyEnd(weightedA_, MAT_FINAL_ASSEMBLY));
