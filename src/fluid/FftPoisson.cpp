@@ -18,9 +18,16 @@ struct Fft {
   ptrdiff_t n[3] = {0, 0, 0};  // FFTW dimensions (z, y, x): slabs along z
   ptrdiff_t localZ = 0, startZ = 0, localY = 0, startY = 0;
   double* data = nullptr;      // FFTW's in-place buffer: slabs [localZ][y][x], after the forward
-                               // transform transposed to [localY][z][x]
-  fftw_plan forward = nullptr, backward = nullptr;
+                               // transform transposed to [localY][z][x] (not on one rank in the
+                               // z-line solve)
+  // A wall z axis is solved along its lines (zLines): transforms over the x-y planes, a transpose
+  // to whole z lines and one tridiagonal solve per line, which saves the strided third transform
+  // (benchmarks/RESULTS.md). A periodic z axis takes the 3-D transform.
+  bool zLines = false;
+  fftw_plan forward = nullptr, backward = nullptr;         // 3-D, or per plane with zLines
+  fftw_plan toLines = nullptr, fromLines = nullptr;        // zLines on several ranks: the transposes
   std::vector<double> eig[3];  // eigenvalues per axis (z, y, x), normalisation folded in
+  std::vector<double> gain;    // zLines: the forward elimination's factors of one y row [z][x]
   Vec slab = nullptr;          // a PETSc view of the buffer (natural order, slab partition)
   VecScatter toSlab = nullptr; // DMDA order -> slabs
 };
@@ -67,10 +74,11 @@ std::vector<PetscInt> dmdaIndices(DM da, PetscInt k0, PetscInt k1)
 PetscErrorCode reset(Fft* f)
 {
   PetscFunctionBeginUser;
-  if (f->forward) fftw_destroy_plan(f->forward);
-  if (f->backward) fftw_destroy_plan(f->backward);
+  for (fftw_plan* p : {&f->forward, &f->backward, &f->toLines, &f->fromLines}) {
+    if (*p) fftw_destroy_plan(*p);
+    *p = nullptr;
+  }
   if (f->data) fftw_free(f->data);
-  f->forward = f->backward = nullptr;
   f->data = nullptr;
   PetscCall(VecDestroy(&f->slab));
   PetscCall(VecScatterDestroy(&f->toSlab));
@@ -107,8 +115,13 @@ PetscErrorCode setUp(PC pc)
   }
   // FFTW's row-major order (z, y, x) is the DMDA's natural order.
   for (int d = 0; d < 3; ++d) f->n[d] = M[2 - d];
-  const ptrdiff_t alloc = fftw_mpi_local_size_3d_transposed(f->n[0], f->n[1], f->n[2], comm, &f->localZ, &f->startZ,
-                                                            &f->localY, &f->startY);
+  f->zLines = bt[2] != DM_BOUNDARY_PERIODIC;
+  const ptrdiff_t nz = f->n[0], ny = f->n[1], nx = f->n[2], plane = ny * nx;
+  const ptrdiff_t zy[2] = {nz, ny};
+  const ptrdiff_t alloc =
+    f->zLines ? fftw_mpi_local_size_many_transposed(2, zy, nx, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, comm,
+                                                    &f->localZ, &f->startZ, &f->localY, &f->startY)
+              : fftw_mpi_local_size_3d_transposed(nz, ny, nx, comm, &f->localZ, &f->startZ, &f->localY, &f->startY);
   f->data = fftw_alloc_real(alloc > 0 ? alloc : 1);
   fftw_r2r_kind fwd[3], bwd[3];
   double norm = 1;
@@ -117,20 +130,43 @@ PetscErrorCode setUp(PC pc)
     const bool periodic = bt[d] == DM_BOUNDARY_PERIODIC;
     fwd[a] = periodic ? FFTW_DHT : FFTW_REDFT10;
     bwd[a] = periodic ? FFTW_DHT : FFTW_REDFT01;
+    if (a == 0 && f->zLines) continue;
     norm *= periodic ? f->n[a] : 2 * f->n[a];
     const double step = (periodic ? 2 : 1) * M_PI / f->n[a];
     f->eig[a].resize(f->n[a]);
     for (ptrdiff_t k = 0; k < f->n[a]; ++k) f->eig[a][k] = f->w[d] * (2 - 2 * std::cos(step * k));
   }
-  // The round trip multiplies by norm: fold it into the eigenvalues.
+  // The round trip multiplies by norm: fold it into the eigenvalues (for the z lines: into their
+  // weight, kept as eig[0][0]).
+  if (f->zLines) f->eig[0].assign(1, f->w[2]);
   for (auto& e : f->eig)
     for (double& v : e) v *= norm;
   const unsigned flags = f->plan ? FFTW_MEASURE : FFTW_ESTIMATE;
-  f->forward = fftw_mpi_plan_r2r_3d(f->n[0], f->n[1], f->n[2], f->data, f->data, comm, fwd[0], fwd[1], fwd[2],
-                                    flags | FFTW_MPI_TRANSPOSED_OUT);
-  f->backward = fftw_mpi_plan_r2r_3d(f->n[0], f->n[1], f->n[2], f->data, f->data, comm, bwd[0], bwd[1], bwd[2],
-                                     flags | FFTW_MPI_TRANSPOSED_IN);
-  PetscCheck(f->forward && f->backward, comm, PETSC_ERR_LIB, "PC fft: FFTW could not plan the transforms");
+  if (f->zLines) {
+    f->gain.resize(nz * nx);
+    const int dims[2] = {int(ny), int(nx)};
+    if (f->localZ > 0) {
+      f->forward = fftw_plan_many_r2r(2, dims, int(f->localZ), f->data, nullptr, 1, int(plane), f->data, nullptr, 1,
+                                      int(plane), fwd + 1, flags);
+      f->backward = fftw_plan_many_r2r(2, dims, int(f->localZ), f->data, nullptr, 1, int(plane), f->data, nullptr, 1,
+                                       int(plane), bwd + 1, flags);
+    }
+    if (size > 1) {
+      f->toLines = fftw_mpi_plan_many_transpose(nz, ny, nx, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, f->data,
+                                                f->data, comm, flags);
+      f->fromLines = fftw_mpi_plan_many_transpose(ny, nz, nx, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK, f->data,
+                                                  f->data, comm, flags);
+      PetscCheck(f->toLines && f->fromLines, comm, PETSC_ERR_LIB, "PC fft: FFTW could not plan the transposes");
+    }
+    PetscCheck(f->localZ == 0 || (f->forward && f->backward), comm, PETSC_ERR_LIB,
+               "PC fft: FFTW could not plan the transforms");
+  } else {
+    f->forward = fftw_mpi_plan_r2r_3d(nz, ny, nx, f->data, f->data, comm, fwd[0], fwd[1], fwd[2],
+                                      flags | FFTW_MPI_TRANSPOSED_OUT);
+    f->backward = fftw_mpi_plan_r2r_3d(nz, ny, nx, f->data, f->data, comm, bwd[0], bwd[1], bwd[2],
+                                       flags | FFTW_MPI_TRANSPOSED_IN);
+    PetscCheck(f->forward && f->backward, comm, PETSC_ERR_LIB, "PC fft: FFTW could not plan the transforms");
+  }
 
   const PetscInt local = f->localZ * f->n[1] * f->n[2];
   PetscCall(VecCreateMPIWithArray(comm, 1, local, PETSC_DECIDE, f->data, &f->slab));
@@ -147,14 +183,9 @@ PetscErrorCode setUp(PC pc)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode apply(PC pc, Vec b, Vec x)
+// After the 3-D transforms (transposed layout [localY][z][x]): divides by the eigenvalues.
+void divideByEigenvalues(Fft* f)
 {
-  auto* f = static_cast<Fft*>(pc->data);
-  PetscFunctionBeginUser;
-  PetscCall(VecScatterBegin(f->toSlab, b, f->slab, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(f->toSlab, b, f->slab, INSERT_VALUES, SCATTER_FORWARD));
-  fftw_execute(f->forward);
-  // Transposed layout [localY][z][x].
   const ptrdiff_t nz = f->n[0], nx = f->n[2];
   const double *ez = f->eig[0].data(), *ey = f->eig[1].data(), *ex = f->eig[2].data();
   for (ptrdiff_t jl = 0; jl < f->localY; ++jl) {
@@ -166,7 +197,88 @@ PetscErrorCode apply(PC pc, Vec b, Vec x)
     }
   }
   if (f->localY > 0 && f->startY == 0) f->data[0] = 0;  // the null space (constant mode)
-  fftw_execute(f->backward);
+}
+
+// The zero (x, y) mode's z line, w_z T p = r with T the Neumann second difference: singular (the
+// constant null space), so r loses its mean and p is the zero-mean solution, by summation:
+// w_z (p_k - p_{k+1}) = r_0 + ... + r_k.
+void solveZeroModeLine(double* p, ptrdiff_t nz, ptrdiff_t stride, double wz)
+{
+  double mean = 0;
+  for (ptrdiff_t k = 0; k < nz; ++k) mean += p[k * stride] / nz;
+  double sum = 0, value = 0, valueMean = 0;
+  for (ptrdiff_t k = 0; k < nz; ++k) {
+    const double r = p[k * stride] - mean;
+    p[k * stride] = value;
+    valueMean += value / nz;
+    sum += r;
+    value -= sum / wz;
+  }
+  for (ptrdiff_t k = 0; k < nz; ++k) p[k * stride] -= valueMean;
+}
+
+// After the plane transforms, with whole z lines on this rank ([localY][z][x] after the transpose,
+// [z][y][x] on one rank): (w_z T + lambda_y + lambda_x) p = r for every (y, x) mode by Thomas'
+// elimination, one y row at a time and vectorised over x; gain holds the row's elimination factors.
+void solveZLines(Fft* f)
+{
+  const ptrdiff_t nz = f->n[0], ny = f->n[1], nx = f->n[2];
+  const bool transposed = f->toLines != nullptr;
+  const ptrdiff_t rows = transposed ? f->localY : ny, row0 = transposed ? f->startY : 0;
+  const ptrdiff_t sk = transposed ? nx : ny * nx, sj = transposed ? nz * nx : nx;
+  const double wz = f->eig[0][0], *ey = f->eig[1].data(), *ex = f->eig[2].data();
+  double* gain = f->gain.data();
+  for (ptrdiff_t jl = 0; jl < rows; ++jl) {
+    double* p = f->data + jl * sj;
+    const double ly = ey[row0 + jl];
+    const ptrdiff_t i0 = row0 + jl == 0 ? 1 : 0;  // the zero mode's line apart
+    for (ptrdiff_t k = 0; k < nz; ++k) {
+      double* __restrict r = p + k * sk;
+      double* __restrict g = gain + k * nx;
+      const double diag = nz == 1 ? 0 : k == 0 || k == nz - 1 ? wz : 2 * wz;
+      if (k == 0) {
+        for (ptrdiff_t i = i0; i < nx; ++i) {
+          const double m = 1 / (diag + ly + ex[i]);
+          g[i] = wz * m;
+          r[i] *= m;
+        }
+      } else {
+        const double* __restrict gp = g - nx;
+        const double* __restrict rp = r - sk;
+        for (ptrdiff_t i = i0; i < nx; ++i) {
+          const double m = 1 / (diag + ly + ex[i] - wz * gp[i]);
+          g[i] = wz * m;
+          r[i] = (r[i] + wz * rp[i]) * m;
+        }
+      }
+    }
+    for (ptrdiff_t k = nz - 2; k >= 0; --k) {
+      double* __restrict r = p + k * sk;
+      const double* __restrict rn = r + sk;
+      const double* __restrict g = gain + k * nx;
+      for (ptrdiff_t i = i0; i < nx; ++i) r[i] += g[i] * rn[i];
+    }
+    if (i0 == 1) solveZeroModeLine(p, nz, sk, wz);
+  }
+}
+
+PetscErrorCode apply(PC pc, Vec b, Vec x)
+{
+  auto* f = static_cast<Fft*>(pc->data);
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(f->toSlab, b, f->slab, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(f->toSlab, b, f->slab, INSERT_VALUES, SCATTER_FORWARD));
+  if (f->zLines) {
+    if (f->forward) fftw_execute(f->forward);
+    if (f->toLines) fftw_execute(f->toLines);
+    solveZLines(f);
+    if (f->fromLines) fftw_execute(f->fromLines);
+    if (f->backward) fftw_execute(f->backward);
+  } else {
+    fftw_execute(f->forward);
+    divideByEigenvalues(f);
+    fftw_execute(f->backward);
+  }
   PetscCall(VecScatterBegin(f->toSlab, f->slab, x, INSERT_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(f->toSlab, f->slab, x, INSERT_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);

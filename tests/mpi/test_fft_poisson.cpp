@@ -83,7 +83,8 @@ TEST_CASE("fft solves the 7-point Poisson problem exactly on its eigenfunctions"
   VP_CALL(DMCreateGlobalVector(g.cellDM(), &phi));
   VP_CALL(VecDuplicate(phi, &b));
   VP_CALL(VecDuplicate(phi, &x));
-  for (const auto& m : {std::array<int, 3>{1, 0, 0}, std::array<int, 3>{3, 2, 1}, std::array<int, 3>{11, 5, 4}}) {
+  for (const auto& m : {std::array<int, 3>{1, 0, 0}, std::array<int, 3>{0, 0, 3}, std::array<int, 3>{3, 2, 1},
+                        std::array<int, 3>{11, 5, 4}}) {
     const double lambda = fillEigenfunction(g, m.data(), phi);
     VP_CALL(VecCopy(phi, b));
     VP_CALL(VecScale(b, lambda));  // b = -lap_h phi

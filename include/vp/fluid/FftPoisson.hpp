@@ -4,8 +4,10 @@
 // axes and periodic axes, by real-to-real transforms (FFTW-MPI): a DCT-II per wall axis and a
 // discrete Hartley transform per periodic axis diagonalise A exactly, with eigenvalues
 // sum_d w_d (2 - 2 cos theta_d), theta = pi k / N (wall) or 2 pi k / N (periodic). The zero mode
-// (the constant null space) is set to zero, so the result has zero mean. FFTW splits the z axis
-// into slabs (one rank needs at least one z cell); the DMDA blocks reach the slabs through one
+// (the constant null space) is set to zero, so the result has zero mean. With a wall z axis only
+// the x-y planes are transformed and each (x, y) mode's z line is solved as the tridiagonal system
+// it is (exact as well, and cheaper than a strided third transform). FFTW splits the z axis into
+// slabs (one rank needs at least one z cell); the DMDA blocks reach the slabs through one
 // VecScatter each way. Use -pressure_ksp_type preonly for a direct solve, or CG with it.
 // Options (prefix of the PC): -pc_fft_plan estimate|measure (FFTW planning effort).
 #include <petscpc.h>
