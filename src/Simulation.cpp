@@ -331,6 +331,10 @@ int Simulation::run()
       stop = "reached -time_wall_limit";
       break;
     }
+    if (collapse_ && collapse_->atRest(cfg_.output.restSpeed, cfg_.output.restWindow)) {
+      stop = "the collapse came to rest (-collapse_rest_speed)";
+      break;
+    }
   }
   loopWall_ = MPI_Wtime() - loopStart;
   if (recordedStep_ != step_ && step_ > firstStep_) record();  // the time series end with the final state

@@ -59,6 +59,22 @@ void CollapseMonitor::record(double time, const ParticleStore& p)
 {
   const CollapseState c = measure(p);
   csv_->row({time, c.front, c.front99, c.heightBack});
+  front99_.emplace_back(time, c.front99);
+}
+
+bool CollapseMonitor::atRest(double speed, double window)
+{
+  if (speed <= 0 || front99_.empty()) return false;
+  // Keep the rows of the last window and the one just before it, so that the window is covered.
+  const double now = front99_.back().first;
+  while (front99_.size() > 1 && now - front99_[1].first >= window) front99_.pop_front();
+  if (now - front99_.front().first < window) return false;
+  double lo = front99_.front().second, hi = lo;
+  for (const auto& [t, f] : front99_) {
+    lo = std::min(lo, f);
+    hi = std::max(hi, f);
+  }
+  return hi - lo < speed * window;
 }
 
 void CollapseMonitor::writeDeposit(const ParticleStore& p) const

@@ -303,3 +303,8 @@ vp_bad_input(dem_drag_negative 1 "option -dem_drag_viscosity: must be >= 0 \\(Pa
 add_test(NAME coupling_spin_down COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spin_down.sh $<TARGET_FILE:vpsolve>)
 set_tests_properties(coupling_spin_down PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
 vp_bad_input(dem_implicit_drag_range 1 "option -dem_implicit_drag: must be in \\[0, 100\\], got -1" -dem_implicit_drag -1)
+# -collapse_rest_speed: a pile that spreads stops at the first row whose window of the front is at rest, not later.
+add_test(NAME collapse_rest COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_collapse_rest.py $<TARGET_FILE:vpsolve> ${CMAKE_CURRENT_BINARY_DIR}/collapse_rest)
+set_tests_properties(collapse_rest PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+vp_bad_input(collapse_rest_without_monitor 1 "option -collapse_rest_speed: needs -collapse_monitor" -collapse_rest_speed 1e-3)
+vp_bad_input(collapse_rest_window 1 "option -collapse_rest_window: must be > 0, got 0" -collapse_monitor -collapse_rest_window 0)

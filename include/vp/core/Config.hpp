@@ -58,6 +58,8 @@ struct OutputConfig {
   bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
   std::vector<Vec3> probes;                // -probe x,y,z,...: pressure probes (probes.csv) [m]
   bool collapse = false;                   // -collapse_monitor: collapse.csv and deposit.csv
+  double restSpeed = 0;                    // -collapse_rest_speed: stop once the front is at rest [m/s] (0: never)
+  double restWindow = 0.2;                 // -collapse_rest_window: over this long [s]
 };
 
 // Checks after every step that stop a run going wrong (docs/robustness.md).

@@ -12,6 +12,7 @@
 #include "vp/grid/Grid.hpp"
 #include "vp/io/CsvWriter.hpp"
 #include "vp/particles/ParticleStore.hpp"
+#include <deque>
 #include <memory>
 #include <string>
 
@@ -30,6 +31,9 @@ public:
   CollapseState measure(const ParticleStore& p) const;
   // measure() and a row of collapse.csv. Collective.
   void record(double time, const ParticleStore& p);
+  // True once the recorded 99th-percentile front has moved by less than speed * window over the
+  // last window of time (the same answer on every rank; a restart starts a new window).
+  bool atRest(double speed, double window);
   // deposit.csv: x of the bin centre, h. Collective.
   void writeDeposit(const ParticleStore& p) const;
 
@@ -43,6 +47,7 @@ private:
   const Grid& grid_;
   std::string dir_;
   std::unique_ptr<CsvWriter> csv_;
+  std::deque<std::pair<double, double>> front99_;  // (time, front99) of the recorded rows, the last window
 };
 
 } // namespace vp
