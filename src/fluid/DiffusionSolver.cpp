@@ -2,6 +2,7 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/OptionDefaults.hpp"
 #include "vp/core/VecValues.hpp"
+#include "vp/core/VectorClones.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
@@ -154,7 +155,7 @@ void DiffusionSolver::assemble()
 // y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
 // 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
 // row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
-double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
+VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
 {
   const Grid& g = grid_;
   DM f = g.faceSolveDM();
@@ -300,7 +301,7 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 // products vectorise, summed in a fixed order for a given build).
 namespace {
 
-void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
+VP_VECTOR_CLONES void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
                      const PetscScalar* __restrict dinv, PetscScalar* __restrict r, PetscScalar* __restrict p,
                      double sums[3])
 {
@@ -318,7 +319,7 @@ void initialResidual(PetscInt n, const PetscScalar* __restrict b, const PetscSca
   sums[2] = bb;
 }
 
-void update(PetscInt n, double alpha, const PetscScalar* __restrict p, const PetscScalar* __restrict ap,
+VP_VECTOR_CLONES void update(PetscInt n, double alpha, const PetscScalar* __restrict p, const PetscScalar* __restrict ap,
             const PetscScalar* __restrict dinv, PetscScalar* __restrict x, PetscScalar* __restrict r, double sums[2])
 {
   double rz = 0, rr = 0;
@@ -333,7 +334,7 @@ void update(PetscInt n, double alpha, const PetscScalar* __restrict p, const Pet
   sums[1] = rr;
 }
 
-void newDirection(PetscInt n, double beta, const PetscScalar* __restrict r, const PetscScalar* __restrict dinv,
+VP_VECTOR_CLONES void newDirection(PetscInt n, double beta, const PetscScalar* __restrict r, const PetscScalar* __restrict dinv,
                   PetscScalar* __restrict p)
 {
 #pragma omp simd

@@ -1,4 +1,5 @@
 #include "vp/fluid/Operators.hpp"
+#include "vp/core/VectorClones.hpp"
 #include "vp/grid/Boundary.hpp"
 #include <cmath>
 #include <cstddef>
@@ -53,7 +54,7 @@ inline void rowTerms(const PetscScalar* __restrict q, const std::ptrdiff_t o[3],
 
 } // namespace
 
-void advectionAndLaplacian(const Grid& g, PetscScalar**** u, PetscScalar**** N, PetscScalar**** L)
+VP_VECTOR_CLONES void advectionAndLaplacian(const Grid& g, PetscScalar**** u, PetscScalar**** N, PetscScalar**** L)
 {
   const double ih[3] = {1 / g.h(0), 1 / g.h(1), 1 / g.h(2)};
   const double ih2[3] = {ih[0] * ih[0], ih[1] * ih[1], ih[2] * ih[2]};

@@ -37,6 +37,11 @@ public:
   bool assembled() const { return assembled_; }
   bool fused() const { return fused_; }
 
+  // y = A x. x global, or local (its owned values set, zero on the fixed wall faces; the ghosts
+  // are updated here) when `local` is set, as in the fused CG; then `dot` also returns this rank's
+  // part of x.y.
+  double apply(Vec x, Vec y, bool dot, bool local = false);
+
   // One face's row of S L: weight S, diagonal and the coefficients to the -1 / +1 neighbours.
   struct Row {
     bool fixed = false;  // a wall-normal face: identity row, the increment stays zero
@@ -48,9 +53,6 @@ private:
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
-  // y = A x. x global, or local (its owned values set, zero on the fixed wall faces; the ghosts
-  // are updated here) when `local` is set; then `dot` also returns this rank's part of x.y.
-  double apply(Vec x, Vec y, bool dot, bool local = false);
   // f(global offset, local offset, length) for every owned grid row of 3 nx values.
   template <class F>
   void forRows(F f) const;
