@@ -13,7 +13,8 @@
 
 namespace vp {
 
-DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc) : grid_(grid), bc_(bc)
+DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc)
+  : grid_(grid), bc_(bc), ghosts_(grid.faceSolveDM())
 {
   const ViscousOperator op = readSolverOptions().viscousOperator;
   assembled_ = op == ViscousOperator::Assembled;
@@ -161,10 +162,7 @@ VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool loca
   DM f = g.faceSolveDM();
   const Vec xLocal = local ? x : xL_;
   if (local) {
-    if (g.exchangesGhosts()) {
-      VP_CALL(DMLocalToLocalBegin(f, x, INSERT_VALUES, x));
-      VP_CALL(DMLocalToLocalEnd(f, x, INSERT_VALUES, x));
-    }
+    if (g.exchangesGhosts()) ghosts_.apply(x);
   } else {
     VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
   }

@@ -13,6 +13,7 @@
 // for preconditioners that need one (hypre, gamg), useful when nu dt / h^2 is large (docs/fluid.md).
 #include "vp/core/Config.hpp"
 #include "vp/fluid/SolverOptions.hpp"
+#include "vp/grid/GhostRefresh.hpp"
 #include "vp/grid/Grid.hpp"
 #include <petscksp.h>
 
@@ -64,6 +65,7 @@ private:
 
   const Grid& grid_;
   const BoundaryConfig bc_;
+  const GhostRefresh ghosts_;  // of a local direction (fused CG)
   bool assembled_ = false, fused_ = false;
   Mat SL_ = nullptr, A_ = nullptr, shell_ = nullptr;
   Vec S_ = nullptr, SdiagL_ = nullptr, diag_ = nullptr, xL_ = nullptr;  // diag_: assembled only
