@@ -15,7 +15,7 @@ LubricationParams readLubricationOptions()
   p.activation = o.real("-lub_activation", p.activation, "Gap eps_act = h/a (a: the smaller radius of the pair) below which "
                                                          "the unresolved force is added (0: -lub_activation_cells)");
   p.activationCells = o.real("-lub_activation_cells", p.activationCells,
-                             "Activation gap in grid cells, the same for every pair (0: 0.2 in coupled runs)");
+                             "Activation gap in grid cells, the same for every pair (0: 0.18 in coupled runs)");
   p.saturation = o.real("-lub_saturation", p.saturation, "Gap eps_sat = h/a below which the force is held constant "
                                                          "(0: the contact roughness, or 4e-4 without one)");
   p.llcmRegion = o.real("-lub_llcm_r0", p.llcmRegion,
@@ -24,7 +24,7 @@ LubricationParams readLubricationOptions()
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
   if (!(p.activationCells >= 0 && std::isfinite(p.activationCells)))
-    failOption("-lub_activation_cells", "must be >= 0 (0: 0.2 cells in coupled runs)", p.activationCells);
+    failOption("-lub_activation_cells", "must be >= 0 (0: 0.18 cells in coupled runs)", p.activationCells);
   if (p.activation > 0 && p.activationCells > 0)
     failOption("-lub_activation_cells", "give either -lub_activation or -lub_activation_cells", p.activationCells);
   if (!(p.saturation >= 0 && std::isfinite(p.saturation)))

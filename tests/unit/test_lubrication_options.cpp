@@ -67,9 +67,9 @@ TEST_CASE("Lubrication parameters completed by the caller", "[lub]")
 {
   LubricationParams p;
   p.model = LubModel::Blcm;
-  p.complete(1e-4, true, 4e-4, 1e-3); // coupled: activation 0.2 cells; saturation from the roughness
+  p.complete(1e-4, true, 4e-4, 1e-3); // coupled: activation 0.18 cells; saturation from the roughness
   CHECK(p.activationCells == kDefaultActivationCells);
-  CHECK(p.activationGap(1e-3) == Approx(0.2e-4).epsilon(1e-15));
+  CHECK(p.activationGap(1e-3) == Approx(0.18e-4).epsilon(1e-15));
   CHECK(p.activationGap(5e-4) == p.activationGap(1e-3));
   CHECK(p.saturation == 4e-4);
   LubricationParams q;

@@ -15,7 +15,7 @@ namespace vp {
 enum class LubModel { None, Blcm, Llcm };
 
 // Default activation gap of coupled runs, in grid cells (calibrated: docs/collisions.md).
-constexpr double kDefaultActivationCells = 0.2;
+constexpr double kDefaultActivationCells = 0.18;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
 // the calibration spheres, 2e-4 d (docs/lubrication.md).
 constexpr double kDefaultSaturation = 4e-4;
