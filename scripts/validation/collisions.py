@@ -95,6 +95,13 @@ def restitution():
     ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
+    # Rigid-sphere lubrication theory: the same velocity loss u_in L / St on the way in and out, L the
+    # integral of Brenner's resistance from the gap where u_in is taken (0.1 d) to the roughness (2e-4 d).
+    n = 2000
+    lo, hi = 4e-4, 0.2
+    L = sum(brenner(lo * (hi / lo) ** ((k + 0.5) / n)) * lo * (hi / lo) ** ((k + 0.5) / n) * math.log(hi / lo) / n for k in range(n))
+    ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
+                label="lubrication theory, rigid sphere (L = %.2f)" % L)
     failures = []
     sets = ((HYDRO, [], "s", ST_LIST), ("keep", [], "o", [40, 152, 500]), (HYDRO, PLAIN, "^", [40, 152, 500]))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
