@@ -97,9 +97,10 @@ def restitution():
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
     # Rigid-sphere lubrication theory: the same velocity loss u_in L / St on the way in and out, L the
     # integral of Brenner's resistance from the gap where u_in is taken (0.1 d) to the roughness (2e-4 d).
-    n = 2000
-    lo, hi = 4e-4, 0.2
-    L = sum(brenner(lo * (hi / lo) ** ((k + 0.5) / n)) * lo * (hi / lo) ** ((k + 0.5) / n) * math.log(hi / lo) / n for k in range(n))
+    # Midpoint rule in ln(eps): the integral of lambda d eps is that of lambda eps d ln(eps).
+    n, lo, hi = 2000, 4e-4, 0.2
+    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
+    L = sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
     ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
                 label="lubrication theory, rigid sphere (L = %.2f)" % L)
     failures = []

@@ -81,9 +81,9 @@ void Penalization::build(const ParticleStore& s, double dt)
         const double reach2 = reach * reach;
         auto coord = [&](int d, PetscInt q) { return d == c ? g.faceCoord(d, q) : g.cellCentre(d, q); };
         for (PetscInt k = lo[2]; k < hi[2]; ++k) {
-          const double dz2 = (coord(2, k) - X[2]) * (coord(2, k) - X[2]);
+          const double dz = coord(2, k) - X[2], dz2 = dz * dz;
           for (PetscInt j = lo[1]; j < hi[1]; ++j) {
-            const double dyz2 = dz2 + (coord(1, j) - X[1]) * (coord(1, j) - X[1]);
+            const double dy = coord(1, j) - X[1], dyz2 = dz2 + dy * dy;
             if (dyz2 > reach2) continue;
             for (PetscInt i = lo[0]; i < hi[0]; ++i) {
               const Vec3 x{coord(0, i), coord(1, j), coord(2, k)};
