@@ -336,6 +336,8 @@ A, MU, U = 0.5, 1.0, 0.01          # radius, viscosity, speed (Re = 0.01); d = 1
 GAPS = [0.01, 0.05, 0.1, 0.2, 0.5, 1.0]
 # The normal mode has Brenner's series at any gap: two more where the resolved force falls away.
 NORMAL_GAPS = [0.01, 0.02, 0.03, 0.05, 0.1, 0.2, 0.5, 1.0]
+# The tangential modes: two below 0.01, where their correction (from its own activation gap) acts.
+SHEAR_GAPS = [0.002, 0.005] + GAPS
 # The resolved runs use the cases' fluid set-up: the weighted projection with PFMG (docs/coupling.md).
 CASE_FLUID = ["-penalization_projection", "weighted", "-pressure_pc_type", "pfmg"]
 TWO = {1.0: 1.01933, 0.5: 1.38621, 0.2: 2.31277, 0.1: 3.70665, 0.05: 6.35564, 0.01: 26.71115}
@@ -358,11 +360,14 @@ def brenner(eps):
     return 4 / 3 * math.sinh(al) * tot
 
 
+# Below eps 0.01 the tangential modes' asymptotic forms (Goldman, Cox & Brenner 1967; within 0.2 and
+# 0.8 % of the tables at 0.01): F / (6 pi mu a U) = (8/15) ln(1/eps) + 0.9588 (translation),
+# T / (8 pi mu a^3 Omega) = (2/5) ln(1/eps) + 0.3817 (rotation).
 MODES = {  # exact value, normalisation, and how each is read from particle_0.csv
     "normal": (lambda e: brenner(e), "F / (6 pi mu a U), normal to a wall"),
     "pair": (lambda e: TWO[e], "F / (6 pi mu a V), two spheres approaching"),
-    "parallel": (lambda e: FXT[e], "F / (6 pi mu a U), parallel to a wall"),
-    "rotation": (lambda e: TYR[e], "T / (8 pi mu a^3 Omega), rotating at a wall"),
+    "parallel": (lambda e: FXT.get(e, 8 / 15 * math.log(1 / e) + 0.9588), "F / (6 pi mu a U), parallel to a wall"),
+    "rotation": (lambda e: TYR.get(e, 0.4 * math.log(1 / e) + 0.3817), "T / (8 pi mu a^3 Omega), rotating at a wall"),
 }
 
 
@@ -411,12 +416,14 @@ def calib_value(mode, row, speed, resolved=True):
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
-    or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r."""
+    or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
+    tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller)."""
     n = 4 * r
     bc, one, speed = calib_geometry(mode, eps)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
+    tag += "" if shear is None else "_s%g" % shear
     out = "/tmp/vp_col_cal_" + tag
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
@@ -433,18 +440,21 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0):
     elif mode == "normal":
         part = ["-particle_position", "2,2,%r" % (A * (1 + eps)), "-particle_fixed", "-particle_velocity", "0,0,%r" % -speed]
     rows = run(out, *common, *part, "-fluid_off", "-time_dt", 1e-9, "-time_max_steps", 1, "-lub_model", lub,
-               "-lub_activation_cells", cells, "-lub_llcm_r0", r0, np=1, case="none")
+               "-lub_activation_cells", cells, "-lub_llcm_r0", r0,
+               *([] if shear is None else ["-lub_shear_activation_cells", shear]), np=1, case="none")
     return calib_value(mode, rows[0], speed, resolved=False)
 
 
-ACTIVATIONS = [0.1, 0.15, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5]  # cells, for the scan
+ACTIVATIONS = [0.1, 0.15, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5]  # cells, for the scan (squeeze)
+SHEAR_ACTIVATIONS = [0.04, 0.06, 0.08, 0.1, 0.12, 0.18]  # cells, for the scan of the tangential modes
 DEFAULT_CELLS = 0.18  # kDefaultActivationCells (include/vp/interactions/LubricationModel.hpp)
+TANGENTIAL = ("parallel", "rotation")
 
 
 def calibration():
     fine = "--fine" in sys.argv
     res_list = {m: [8, 12] + ([16, 24] if fine and m == "normal" else [16] if fine else []) for m in MODES}
-    gaps = {m: NORMAL_GAPS if m == "normal" else GAPS for m in MODES}
+    gaps = {m: NORMAL_GAPS if m == "normal" else SHEAR_GAPS if m in TANGENTIAL else GAPS for m in MODES}
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
     for ax, (mode, (exact, title)) in zip(axes.flat, MODES.items()):
         G = gaps[mode]
@@ -454,9 +464,13 @@ def calibration():
             resolved = [calib_run(mode, e, r) for e in G]
             c = "C%d" % k
             ax.loglog(G, resolved, "o--", color=c, mfc="none", label="resolved, d/dx %d" % r)
+            # The defaults (squeeze 0.18, tangential 0.06 cells) and the sharp-interface codes' 1.5 cells.
             for cells, mark in ((DEFAULT_CELLS, "s-"), (1.5, "^:")):
-                total = [x + calib_run(mode, e, r, "llcm", cells) for e, x in zip(G, resolved)]
-                ax.loglog(G, total, mark, color=c, ms=4, label="+ LLCM from %g cells, d/dx %d" % (cells, r))
+                shear = cells if cells > DEFAULT_CELLS else None
+                total = [x + calib_run(mode, e, r, "llcm", cells, shear=shear) for e, x in zip(G, resolved)]
+                what = "%g cells" % cells if mode not in TANGENTIAL else \
+                    "%g cells" % (shear or 0.06) if cells > DEFAULT_CELLS else "0.06 cells (tangential default)"
+                ax.loglog(G, total, mark, color=c, ms=4, label="+ LLCM from %s, d/dx %d" % (what, r))
             for e, x, y in zip(G, ex, resolved):
                 llcm = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
                 blcm = calib_run(mode, e, r, "blcm", DEFAULT_CELLS)
@@ -464,12 +478,14 @@ def calibration():
                       "  + BLCM %8.4f (%+6.1f %%)  [activation %g cells = eps %.3f]" %
                       (mode, r, e, x, y, 100 * (y / x - 1), y + llcm, 100 * ((y + llcm) / x - 1), y + blcm,
                        100 * ((y + blcm) / x - 1), DEFAULT_CELLS, DEFAULT_CELLS / r / A), flush=True)
-            # Activation scan: error of resolved + LLCM over eps in [0.01, 0.5] for each activation.
-            for cells in ACTIVATIONS:
-                errs = ["%+4.0f" % (100 * ((y + calib_run(mode, e, r, "llcm", cells)) / x - 1))
+            # Activation scan: error of resolved + LLCM for each activation gap (the tangential
+            # modes: the gap of their own terms), over the gaps up to 0.5.
+            for cells in SHEAR_ACTIVATIONS if mode in TANGENTIAL else ACTIVATIONS:
+                squeeze, shear = (max(cells, DEFAULT_CELLS), cells) if mode in TANGENTIAL else (cells, None)
+                errs = ["%+4.0f" % (100 * ((y + calib_run(mode, e, r, "llcm", squeeze, shear=shear)) / x - 1))
                         for e, x, y in zip(G, ex, resolved) if e <= 0.5]
-                print("calibration scan: %-8s d/dx %2d activation %4g cells: error %% at eps 0.01..0.5: %s" %
-                      (mode, r, cells, " ".join(errs)), flush=True)
+                print("calibration scan: %-8s d/dx %2d activation %4g cells: error %% at eps %s..0.5: %s" %
+                      (mode, r, cells, G[0], " ".join(errs)), flush=True)
         ax.set_title(title, fontsize=9)
         ax.set_xlabel("gap eps = h / a")
         ax.legend(fontsize=6)

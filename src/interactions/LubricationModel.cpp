@@ -21,7 +21,10 @@ void LubricationParams::complete(double cellSize, bool coupled, double saturatio
   // The resolved squeeze follows the exact Stokes resistance down to gaps of a fraction of a cell
   // (docs/collisions.md, calibration): the correction starts there.
   if (activation == 0 && activationCells == 0 && coupled) activationCells = kDefaultActivationCells;
+  // The resolved shear force and torque follow theirs to smaller gaps still (same page).
+  if (shearActivationCells == 0) shearActivationCells = std::min(activationCells, kDefaultShearActivationCells);
   gridGap_ = activationCells * cellSize;
+  shearGridGap_ = shearActivationCells * cellSize;
   if (saturation == 0) saturation = saturationFromRoughness > 0 ? saturationFromRoughness : kDefaultSaturation;
   if (model == LubModel::None) return;
   std::ostringstream msg;
@@ -34,6 +37,9 @@ void LubricationParams::complete(double cellSize, bool coupled, double saturatio
     msg << "option -lub_saturation: the saturation gap " << saturation << " a must be > 0 and below the activation gap "
         << "-lub_activation_cells = " << activationCells << " cells (" << gridGap_ << " m) for the largest radius "
         << rmax << " m, got " << saturation;
+  else if (activation == 0 && !(shearActivationCells > 0 && shearActivationCells <= activationCells))
+    msg << "option -lub_shear_activation_cells: must be in (0, -lub_activation_cells = " << activationCells
+        << "], got " << shearActivationCells;
   else if (!(llcmRegion > 0 && std::isfinite(llcmRegion)))
     msg << "option -lub_llcm_r0: must be > 0, got " << llcmRegion;
   if (!msg.str().empty()) throw InputError(msg.str());
@@ -48,17 +54,40 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
   }
 }
 
+namespace {
+
+// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion.
+PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double hAct, double a)
+{
+  PairState at = s, act = s;
+  at.gap = std::max(s.gap, p.saturation * a);
+  act.gap = hAct;
+  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
+  f -= lubricationModelForce(p.model, p.llcmRegion, act);
+  return f;
+}
+
+} // namespace
+
 PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap)
 {
   const double a = std::min(s.radiusI, s.radiusJ);
   const double hAct = p.activationGap(a);
   if (p.model == LubModel::None || !(s.gap < hAct) || s.gap <= contactGap) return {};
 
-  PairState at = s, act = s;
-  at.gap = std::max(s.gap, p.saturation * a);
-  act.gap = hAct;
-  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
-  f -= lubricationModelForce(p.model, p.llcmRegion, act);
+  // The squeeze: the normal relative motion alone.
+  PairState squeeze = s;
+  squeeze.velocityI = dot(s.velocityI, s.normal) * s.normal;
+  squeeze.velocityJ = dot(s.velocityJ, s.normal) * s.normal;
+  squeeze.angularVelocityI = squeeze.angularVelocityJ = Vec3{};
+  PairForce f = unresolvedPart(p, squeeze, hAct, a);
+  const double hShear = p.shearActivationGap(a);
+  if (s.gap < hShear && p.saturation * a < hShear) {
+    PairState shear = s;
+    shear.velocityI = s.tangential(s.velocityI);
+    shear.velocityJ = s.tangential(s.velocityJ);
+    f += unresolvedPart(p, shear, hShear, a);
+  }
   if (s.slipWall) {
     // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
     // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.

@@ -16,6 +16,9 @@ LubricationParams readLubricationOptions()
                                                          "the unresolved force is added (0: -lub_activation_cells)");
   p.activationCells = o.real("-lub_activation_cells", p.activationCells,
                              "Activation gap in grid cells, the same for every pair (0: 0.18 in coupled runs)");
+  p.shearActivationCells = o.real("-lub_shear_activation_cells", p.shearActivationCells,
+                                  "Activation gap of the tangential (sliding, rolling) terms in grid cells "
+                                  "(0: 0.06 in coupled runs, at most -lub_activation_cells)");
   p.saturation = o.real("-lub_saturation", p.saturation, "Gap eps_sat = h/a below which the force is held constant "
                                                          "(0: the contact roughness, or 4e-4 without one)");
   p.llcmRegion = o.real("-lub_llcm_r0", p.llcmRegion,
@@ -27,6 +30,11 @@ LubricationParams readLubricationOptions()
     failOption("-lub_activation_cells", "must be >= 0 (0: 0.18 cells in coupled runs)", p.activationCells);
   if (p.activation > 0 && p.activationCells > 0)
     failOption("-lub_activation_cells", "give either -lub_activation or -lub_activation_cells", p.activationCells);
+  if (!(p.shearActivationCells >= 0 && std::isfinite(p.shearActivationCells)))
+    failOption("-lub_shear_activation_cells", "must be >= 0 (0: 0.06 cells in coupled runs)", p.shearActivationCells);
+  if (p.activation > 0 && p.shearActivationCells > 0)
+    failOption("-lub_shear_activation_cells", "give it with -lub_activation_cells, not -lub_activation",
+               p.shearActivationCells);
   if (!(p.saturation >= 0 && std::isfinite(p.saturation)))
     failOption("-lub_saturation", "must be >= 0 (0: the contact roughness)", p.saturation);
   if (p.activation > 0 && p.saturation >= p.activation) {

@@ -164,8 +164,8 @@ foreach(kind loose dense)
   endif()
   # kinetic energies (fluid, grains) and the run's own collapse measurements (front, 99th-percentile
   # front, back-wall height: collapse.csv) after 20 steps
-  set(ke_loose 7.93500349e-09 2.86251798e-09 0.01907300922 0.01904649073 0.01622679844)
-  set(ke_dense 4.162055045e-09 1.477591098e-09 0.01905499497 0.01903901717 0.01457407214)
+  set(ke_loose 7.980010062e-09 2.891098466e-09 0.01907294015 0.01904675041 0.01622676162)
+  set(ke_dense 4.192074288e-09 1.494405543e-09 0.01905547606 0.01903938624 0.01457405949)
   list(GET ke_${kind} 0 fluid)
   list(GET ke_${kind} 1 grains)
   list(GET ke_${kind} 2 front)

@@ -471,6 +471,70 @@ TEST_CASE("Activation in grid cells: the same gap for every pair radius", "[lub]
   }
 }
 
+TEST_CASE("Tangential terms from their own activation gap; the squeeze from the larger one", "[lub]")
+{
+  const double h = 1e-4;
+  LubricationParams split, one;
+  split.model = one.model = LubModel::Llcm;
+  split.activationCells = one.activationCells = 0.5;
+  split.shearActivationCells = 0.2;  // one: the same gap for both parts (shear 0.5 cells)
+  one.shearActivationCells = 0.5;
+  split.complete(h, true, 1e-4, 2e-3);
+  one.complete(h, true, 1e-4, 2e-3);
+  for (double ratio : kRatios) {
+    PairState s = genericPair(1, ratio);  // oblique velocities and spins
+    PairState squeeze = s;                 // the normal relative motion alone
+    squeeze.velocityI = dot(s.velocityI, s.normal) * s.normal;
+    squeeze.velocityJ = dot(s.velocityJ, s.normal) * s.normal;
+    squeeze.angularVelocityI = squeeze.angularVelocityJ = Vec3{};
+    INFO("ratio " << ratio);
+    // Between the two gaps: the squeeze only, exactly what the normal motion alone gets.
+    s.gap = squeeze.gap = 0.35 * h;
+    const PairForce between = lubricationForce(split, s, 0);
+    CHECK(norm(s.tangential(between.forceI)) <= 1e-14 * norm(between.forceI));
+    CHECK(norm(between.forceI - lubricationForce(split, squeeze, 0).forceI) <= 1e-14 * norm(between.forceI));
+    CHECK(norm(between.forceI - lubricationForce(one, squeeze, 0).forceI) <= 1e-14 * norm(between.forceI));
+    // Below both: the split adds what the tangential part loses from 0.5 to 0.2 cells less than
+    // the single gap; by linearity that is the tangential motion's correction between the two gaps.
+    s.gap = 0.05 * h;
+    PairState shear = s;
+    shear.velocityI = s.tangential(s.velocityI);
+    shear.velocityJ = s.tangential(s.velocityJ);
+    shear.gap = 0.2 * h;
+    LubricationParams wide = one;  // the tangential correction at 0.2 cells from the single 0.5-cell gap
+    const PairForce lost = lubricationForce(wide, shear, 0);
+    const PairForce a = lubricationForce(split, s, 0), b = lubricationForce(one, s, 0);
+    CHECK(norm(s.tangential(lost.forceI)) > 0);
+    // The mid-gap moment makes the torques depend on the gap: compare the forces.
+    CHECK(norm(b.forceI - a.forceI - lost.forceI) <= 1e-12 * norm(b.forceI));
+  }
+}
+
+TEST_CASE("Shear activation: default 0.06 cells, at most the squeeze's, checked", "[lub]")
+{
+  LubricationParams p;
+  p.model = LubModel::Llcm;
+  p.complete(1e-4, true, 4e-4, 1e-3);
+  CHECK(p.shearActivationCells == kDefaultShearActivationCells);
+  CHECK(p.shearActivationGap(1e-3) == Approx(0.06e-4).epsilon(1e-15));
+  LubricationParams q;
+  q.model = LubModel::Llcm;
+  q.activationCells = 0.04;  // below the default shear gap: the shear gap follows it down
+  q.complete(1e-4, true, 4e-4, 1e-5);
+  CHECK(q.shearActivationGap(1e-3) == q.activationGap(1e-3));
+  LubricationParams r;
+  r.model = LubModel::Llcm;
+  r.activationCells = 0.1;
+  r.shearActivationCells = 0.2;
+  CHECK_THROWS_WITH(r.complete(1e-4, true, 4e-4, 1e-5),
+                    "option -lub_shear_activation_cells: must be in (0, -lub_activation_cells = 0.1], got 0.2");
+  LubricationParams e;  // an activation in radii: both parts use it
+  e.model = LubModel::Llcm;
+  e.activation = 0.05;
+  e.complete(1e-4, false, 4e-4, 1e-3);
+  CHECK(e.shearActivationGap(2e-3) == e.activationGap(2e-3));
+}
+
 TEST_CASE("Saturated resistance: BLCM wall value minus its activation value", "[lub]")
 {
   LubricationParams p;

@@ -43,6 +43,13 @@ struct PairForce {
   Vec3 torqueI;
   Vec3 torqueJ;
 
+  PairForce& operator+=(const PairForce& o)
+  {
+    forceI += o.forceI;
+    torqueI += o.torqueI;
+    torqueJ += o.torqueJ;
+    return *this;
+  }
   PairForce& operator-=(const PairForce& o)
   {
     forceI -= o.forceI;

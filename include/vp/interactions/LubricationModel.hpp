@@ -3,7 +3,9 @@
 // Only the part the grid does not resolve is applied (docs/lubrication.md):
 //   F_lub(h) = F_model(max(h, h_sat)) - F_model(h_act)  for h_contact < h < h_act,  0 otherwise,
 // with h_act = activation * a (or a fixed gap in grid cells), h_sat = saturation * a,
-// a = min(a_i, a_j) (a_i at a wall). Zero once the surfaces touch (h <= h_contact, the roughness
+// a = min(a_i, a_j) (a_i at a wall). The model is linear in the velocities: its squeeze part (the
+// normal relative motion) takes h_act, its tangential part (sliding, rolling) the smaller h_act,t,
+// since the grid resolves the logarithmic shear singularity to smaller gaps than the squeeze. Zero once the surfaces touch (h <= h_contact, the roughness
 // gap): the contact model alone acts there. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
@@ -16,6 +18,8 @@ enum class LubModel { None, Blcm, Llcm };
 
 // Default activation gap of coupled runs, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultActivationCells = 0.18;
+// Default activation gap of the tangential terms, in grid cells (calibrated: docs/collisions.md).
+constexpr double kDefaultShearActivationCells = 0.06;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
 // the calibration spheres, 2e-4 d (docs/lubrication.md).
 constexpr double kDefaultSaturation = 4e-4;
@@ -28,6 +32,10 @@ struct LubricationParams {
   // h_act in grid cells (when activation is 0); 0: set by complete() (kDefaultActivationCells in
   // coupled runs).
   double activationCells = 0;
+  // h_act,t of the tangential terms in grid cells (with activationCells; 0: set by complete() to
+  // kDefaultShearActivationCells, at most activationCells). With an activation in radii both parts
+  // use that gap.
+  double shearActivationCells = 0;
   // eps_sat = h_sat / a: the force is held constant below it. 0 means "set by the caller" to the
   // contact roughness gap (2 * -contact_roughness, which is a fraction of the diameter).
   double saturation = 0;
@@ -39,9 +47,12 @@ struct LubricationParams {
   void complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax);
   // Activation gap h_act [m] of a pair whose smaller radius is a.
   double activationGap(double a) const { return activation > 0 ? activation * a : gridGap_; }
+  // Activation gap h_act,t [m] of the tangential terms of that pair.
+  double shearActivationGap(double a) const { return activation > 0 ? activation * a : shearGridGap_; }
 
 private:
-  double gridGap_ = 0;  // activationCells * cell size [m]
+  double gridGap_ = 0;       // activationCells * cell size [m]
+  double shearGridGap_ = 0;  // shearActivationCells * cell size [m]
 };
 
 // Raw model force at the state's gap (no activation or saturation).
