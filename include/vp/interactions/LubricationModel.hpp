@@ -5,8 +5,9 @@
 // with h_act = activation * a (or a fixed gap in grid cells), h_sat = saturation * a,
 // a = min(a_i, a_j) (a_i at a wall). The model is linear in the velocities: its squeeze part (the
 // normal relative motion) takes h_act, its tangential part (sliding, rolling) the smaller h_act,t,
-// since the grid resolves the logarithmic shear singularity to smaller gaps than the squeeze. Zero once the surfaces touch (h <= h_contact, the roughness
-// gap): the contact model alone acts there. A free-slip wall gets a quarter of the squeeze and no
+// since the grid resolves the logarithmic shear singularity to smaller gaps than the squeeze.
+// Zero once the surfaces touch (h <= h_contact, the roughness gap): the contact model alone acts
+// there. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
