@@ -81,17 +81,17 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
   squeeze.velocityJ = dot(s.velocityJ, s.normal) * s.normal;
   squeeze.angularVelocityI = squeeze.angularVelocityJ = Vec3{};
   PairForce f = unresolvedPart(p, squeeze, hAct, a);
+  if (s.slipWall) {
+    // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
+    // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
+    return {0.25 * dot(f.forceI, s.normal) * s.normal, {}, {}};
+  }
   const double hShear = p.shearActivationGap(a);
   if (s.gap < hShear && p.saturation * a < hShear) {
     PairState shear = s;
     shear.velocityI = s.tangential(s.velocityI);
     shear.velocityJ = s.tangential(s.velocityJ);
     f += unresolvedPart(p, shear, hShear, a);
-  }
-  if (s.slipWall) {
-    // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
-    // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
-    return {0.25 * dot(f.forceI, s.normal) * s.normal, {}, {}};
   }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;
