@@ -63,12 +63,17 @@ VP_VECTOR_CLONES void advectionAndLaplacian(const Grid& g, PetscScalar**** u, Pe
   const std::ptrdiff_t o[3] = {3, &u[k0][j0 + 1][i0][0] - &u[k0][j0][i0][0], &u[k0 + 1][j0][i0][0] - &u[k0][j0][i0][0]};
   // Fixed (wall) faces keep N = L = 0: face 0 of a wall-bounded axis.
   const PetscInt iFree = isFixedFace(g, 0, i0) ? i0 + 1 : i0;
+  // Rows addressed by arithmetic: the arrays' pointer tables hold a pointer per face, out of cache.
+  // N and L are owned-box arrays: rows of 3 nx values, planes of ny rows.
+  const PetscInt nx = g.end(0) - i0, ny = g.end(1) - j0, skip = iFree - i0;
+  const PetscScalar* u0 = &u[k0][j0][i0][0];
+  PetscScalar *n0 = &N[k0][j0][i0][0], *l0 = &L[k0][j0][i0][0];
   for (PetscInt k = k0; k < g.end(2); ++k)
     for (PetscInt j = j0; j < g.end(1); ++j) {
       const bool free1 = !isFixedFace(g, 1, j), free2 = !isFixedFace(g, 2, k);
-      const PetscScalar* q = &u[k][j][i0][0];
-      PetscScalar *n = &N[k][j][i0][0], *l = &L[k][j][i0][0];
-      const PetscInt nx = g.end(0) - i0, skip = iFree - i0;
+      const PetscScalar* q = u0 + (j - j0) * o[1] + (k - k0) * o[2];
+      const std::ptrdiff_t row = 3 * nx * ((k - k0) * ny + (j - j0));
+      PetscScalar *n = n0 + row, *l = l0 + row;
       rowTerms<0>(q + 3 * skip, o, ih, ih2, n + 3 * skip, l + 3 * skip, nx - skip);
       if (free1) rowTerms<1>(q, o, ih, ih2, n, l, nx);
       if (free2) rowTerms<2>(q, o, ih, ih2, n, l, nx);
