@@ -3,6 +3,8 @@
 #include "vp/grid/Boundary.hpp"
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace vp::ops {
 
@@ -19,36 +21,35 @@ void forOwned(const Grid& g, F&& f)
       for (PetscInt i = g.start(0); i < g.end(0); ++i) f(i, j, k);
 }
 
-// The convective flux divergence and the Laplacian of component C along a row of `count` faces
-// starting at q, with o[d] the offset of the next face along axis d (3 values per face, the DMDA's
-// ghosted layout). One component per loop keeps the body uniform, so the loop vectorises.
-template <int C>
-inline void rowTerms(const PetscScalar* __restrict q, const std::ptrdiff_t o[3], const double ih[3],
-                     const double ih2[3], PetscScalar* __restrict n, PetscScalar* __restrict l, PetscInt count)
+// The convective flux divergence and the Laplacian along a row of the face array, taken element
+// by element whatever its component (3 values per face, the DMDA's ghosted layout): every
+// neighbour an element needs is at a fixed offset, so the loop reads at unit stride and vectorises
+// without shuffles. Each element picks its own terms by its component c = lane[m]: the candidates
+// are computed for every element and selected, which costs less than de-interleaving the row.
+// oy, oz: the offsets of the next row and plane; the flux of u_c along d through the face's upper
+// side is V T, with T = u_c averaged to it and V the d-velocity there (T itself when d = c).
+inline void rowTerms(const PetscScalar* __restrict q, const double* __restrict lane, std::ptrdiff_t oy,
+                     std::ptrdiff_t oz, const double ih[3], const double ih2[3], PetscScalar* __restrict n,
+                     PetscScalar* __restrict l, std::ptrdiff_t count)
 {
-  const std::ptrdiff_t o0 = o[0], o1 = o[1], o2 = o[2], oc = o[C];
+  // Sums of two values stand for their means: the factor 1/4 of each flux goes into the 1/h.
+  const double fx = 0.25 * ih[0], fy = 0.25 * ih[1], fz = 0.25 * ih[2];
 #pragma omp simd
-  for (PetscInt i = 0; i < count; ++i) {
-    const PetscScalar* f = q + 3 * i;
-    const double uc = f[C];
-    double adv = 0, lap = 0;
-    for (int d = 0; d < 3; ++d) {
-      const std::ptrdiff_t od = d == 0 ? o0 : d == 1 ? o1 : o2;
-      const double up = f[C + od], um = f[C - od];
-      lap += (up - 2 * uc + um) * ih2[d];
-      if (d == C) {
-        // Momentum flux through the cell centres on either side of the face.
-        const double fp = 0.5 * (uc + up), fm = 0.5 * (um + uc);
-        adv += (fp * fp - fm * fm) * ih[d];
-      } else {
-        // Flux through the two edges (C-face, d-face) of the face's control volume.
-        const double vp = 0.5 * (f[d + od] + f[d + od - oc]);
-        const double vm = 0.5 * (f[d] + f[d - oc]);
-        adv += (vp * 0.5 * (uc + up) - vm * 0.5 * (um + uc)) * ih[d];
-      }
-    }
-    n[3 * i + C] = adv;
-    l[3 * i + C] = lap;
+  for (std::ptrdiff_t m = 0; m < count; ++m) {
+    const PetscScalar* p = q + m;
+    const double c = lane[m];
+    const double u = p[0], xp = p[3], xm = p[-3], yp = p[oy], ym = p[-oy], zp = p[oz], zm = p[-oz];
+    l[m] = (xp - 2 * u + xm) * ih2[0] + (yp - 2 * u + ym) * ih2[1] + (zp - 2 * u + zm) * ih2[2];
+    // Upper and lower sides along x, y, z; the d-velocity at each for the components c != d
+    // (every candidate is computed: a conditional load would be a masked one).
+    const double txp = u + xp, txm = xm + u, typ = u + yp, tym = ym + u, tzp = u + zp, tzm = zm + u;
+    const double vxp1 = p[2] + p[2 - oy], vxm1 = p[-1] + p[-1 - oy], vxp2 = p[1] + p[1 - oz], vxm2 = p[-2] + p[-2 - oz];
+    const double vyp0 = p[1 + oy] + p[oy - 2], vym0 = p[1] + p[-2], vyp2 = p[oy - 1] + p[oy - 1 - oz], vym2 = p[-1] + p[-1 - oz];
+    const double vzp0 = p[2 + oz] + p[oz - 1], vzm0 = p[2] + p[-1], vzp1 = p[1 + oz] + p[1 + oz - oy], vzm1 = p[1] + p[1 - oy];
+    const double vxp = c == 0 ? txp : c == 1 ? vxp1 : vxp2, vxm = c == 0 ? txm : c == 1 ? vxm1 : vxm2;
+    const double vyp = c == 1 ? typ : c == 0 ? vyp0 : vyp2, vym = c == 1 ? tym : c == 0 ? vym0 : vym2;
+    const double vzp = c == 2 ? tzp : c == 0 ? vzp0 : vzp1, vzm = c == 2 ? tzm : c == 0 ? vzm0 : vzm1;
+    n[m] = (vxp * txp - vxm * txm) * fx + (vyp * typ - vym * tym) * fy + (vzp * tzp - vzm * tzm) * fz;
   }
 }
 
@@ -58,25 +59,25 @@ VP_VECTOR_CLONES void advectionAndLaplacian(const Grid& g, PetscScalar**** u, Pe
 {
   const double ih[3] = {1 / g.h(0), 1 / g.h(1), 1 / g.h(2)};
   const double ih2[3] = {ih[0] * ih[0], ih[1] * ih[1], ih[2] * ih[2]};
-  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2);
-  // Offsets of the neighbouring faces in the ghosted array (rows are contiguous along x).
-  const std::ptrdiff_t o[3] = {3, &u[k0][j0 + 1][i0][0] - &u[k0][j0][i0][0], &u[k0 + 1][j0][i0][0] - &u[k0][j0][i0][0]};
-  // Fixed (wall) faces keep N = L = 0: face 0 of a wall-bounded axis.
-  const PetscInt iFree = isFixedFace(g, 0, i0) ? i0 + 1 : i0;
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), nx = g.end(0) - i0, ny = g.end(1) - j0;
   // Rows addressed by arithmetic: the arrays' pointer tables hold a pointer per face, out of cache.
   // N and L are owned-box arrays: rows of 3 nx values, planes of ny rows.
-  const PetscInt nx = g.end(0) - i0, ny = g.end(1) - j0, skip = iFree - i0;
   const PetscScalar* u0 = &u[k0][j0][i0][0];
+  const std::ptrdiff_t oy = &u[k0][j0 + 1][i0][0] - u0, oz = &u[k0 + 1][j0][i0][0] - u0, count = 3 * nx;
   PetscScalar *n0 = &N[k0][j0][i0][0], *l0 = &L[k0][j0][i0][0];
+  std::vector<double> lane(count);
+  for (std::ptrdiff_t m = 0; m < count; ++m) lane[m] = double(m % 3);
+  // Fixed (wall) faces get N = L = 0: face 0 of a wall-bounded axis.
+  const bool wallX = isFixedFace(g, 0, i0);
   for (PetscInt k = k0; k < g.end(2); ++k)
     for (PetscInt j = j0; j < g.end(1); ++j) {
-      const bool free1 = !isFixedFace(g, 1, j), free2 = !isFixedFace(g, 2, k);
-      const PetscScalar* q = u0 + (j - j0) * o[1] + (k - k0) * o[2];
-      const std::ptrdiff_t row = 3 * nx * ((k - k0) * ny + (j - j0));
+      const std::ptrdiff_t row = count * ((k - k0) * ny + (j - j0));
       PetscScalar *n = n0 + row, *l = l0 + row;
-      rowTerms<0>(q + 3 * skip, o, ih, ih2, n + 3 * skip, l + 3 * skip, nx - skip);
-      if (free1) rowTerms<1>(q, o, ih, ih2, n, l, nx);
-      if (free2) rowTerms<2>(q, o, ih, ih2, n, l, nx);
+      rowTerms(u0 + (j - j0) * oy + (k - k0) * oz, lane.data(), oy, oz, ih, ih2, n, l, count);
+      if (wallX) n[0] = l[0] = 0;
+      for (int c = 1; c < 3; ++c)
+        if (isFixedFace(g, c, c == 1 ? j : k))
+          for (std::ptrdiff_t m = c; m < count; m += 3) n[m] = l[m] = 0;
     }
 }
 

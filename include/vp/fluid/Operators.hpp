@@ -8,7 +8,7 @@
 namespace vp::ops {
 
 // Convection in divergence form, N_c = sum_d d(u_d u_c)/dx_d, and the Laplacian L_c = lap u_c,
-// at every owned, free face (one sweep: both need the same neighbours).
+// at every owned, free face (one sweep: both need the same neighbours); fixed faces get N = L = 0.
 void advectionAndLaplacian(const Grid& grid, PetscScalar**** u, PetscScalar**** N, PetscScalar**** L);
 
 // div u at every owned cell.
