@@ -3,7 +3,6 @@
 #include "vp/grid/Boundary.hpp"
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 namespace vp::ops {

@@ -1,14 +1,16 @@
 #pragma once
 // Discrete operators of the MAC scheme as pure functions on DMDA arrays. Inputs are local
 // (ghosted, boundary ghosts filled) arrays; outputs are written at the owned entries only, in
-// global index space. Face unknowns fixed by a wall (isFixedFace) are never written.
+// global index space. Face unknowns fixed by a wall (isFixedFace) are not written (but see
+// advectionAndLaplacian).
 #include "vp/core/Vec3.hpp"
 #include "vp/grid/Grid.hpp"
 
 namespace vp::ops {
 
 // Convection in divergence form, N_c = sum_d d(u_d u_c)/dx_d, and the Laplacian L_c = lap u_c,
-// at every owned, free face (one sweep: both need the same neighbours); fixed faces get N = L = 0.
+// at every owned, free face (one sweep: both need the same neighbours); unlike the other operators
+// it writes N = L = 0 on the fixed faces, and N and L must be global (owned-box) arrays.
 void advectionAndLaplacian(const Grid& grid, PetscScalar**** u, PetscScalar**** N, PetscScalar**** L);
 
 // div u at every owned cell.
