@@ -12,7 +12,8 @@ ContactLaw::ContactLaw(const ContactConfig& c, double dtFluid)
     gtRatio_(c.gtRatio),
     roughness_(c.roughness),
     lnEt_(c.restitutionT > 0 ? std::log(c.restitutionT) : 0),
-    tangentialRestitution_(c.restitutionT > 0)
+    tangentialRestitution_(c.restitutionT > 0),
+    muR_(c.rollingFriction)
 {
 }
 
@@ -41,6 +42,7 @@ ContactCoefficients ContactLaw::coefficients(double meff, bool wall) const
     k.gt = gtRatio_ * k.gn;
   }
   k.mu = mu_;
+  k.muR = muR_;
   return k;
 }
 

@@ -31,6 +31,8 @@ ContactConfig readContactOptions()
   k.ktRatio = o.real("-contact_kt_ratio", k.ktRatio, "Tangential / normal stiffness k_t/k_n (without -contact_restitution_t)");
   k.gtRatio = o.real("-contact_damping_t_ratio", k.gtRatio, "Tangential / normal damping gamma_t/gamma_n (without -contact_restitution_t)");
   k.roughness = o.real("-contact_roughness", k.roughness, "Surface gap at which contact starts, fraction of the (mean) diameter");
+  k.rollingFriction = o.real("-contact_rolling_friction", k.rollingFriction,
+                             "Rolling resistance mu_r: a torque mu_r R* F_n against the relative rolling (0: none)");
   k.hydro = static_cast<ContactHydro>(o.choice("-contact_hydro", {"keep", "exclude", "limit"}, static_cast<int>(k.hydro),
                                                "Resolved hydrodynamic force during contact: keep, exclude (buoyancy stays), "
                                                "limit (excluded beyond the buoyant-weight overlap)"));
@@ -52,6 +54,7 @@ void ContactConfig::validate() const
   if (!(ktRatio >= 0 && ktRatio <= 1)) failOption("-contact_kt_ratio", "must be in [0, 1]", ktRatio);
   if (!(gtRatio >= 0 && gtRatio <= 1)) failOption("-contact_damping_t_ratio", "must be in [0, 1]", gtRatio);
   if (!(roughness >= 0 && roughness < 0.5)) failOption("-contact_roughness", "must be in [0, 0.5)", roughness);
+  if (!(rollingFriction >= 0 && rollingFriction <= 1)) failOption("-contact_rolling_friction", "must be in [0, 1]", rollingFriction);
 }
 
 } // namespace vp

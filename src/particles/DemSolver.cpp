@@ -155,16 +155,19 @@ void DemSolver::computeForces(double dt)
       // Lever arms r a_i / (a_i + a_j) add up to r, so the pair conserves angular momentum.
       const double scale = r / (s.radius[i] + s.radius[j]);
       const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
-      const ContactForce f = contactForce(n, reach - r, vc, P.laws[P.law[k]], P.spring[k], dt);
+      const ContactCoefficients& law = P.laws[P.law[k]];
+      const ContactForce f = contactForce(n, reach - r, vc, law, P.spring[k], dt);
       noteOverlap((reach - r) / (2 * std::min(s.radius[i], s.radius[j])), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
       const Vec3 lever = scale * cross(n, f.tangential);
-      torqueI = -s.radius[i] * lever;
-      torqueJ = -s.radius[j] * lever;
+      const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR,
+                                      s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]),
+                                      s.invInertia[i] + s.invInertia[j], dt);
+      torqueI = roll - s.radius[i] * lever;
+      torqueJ = -roll - s.radius[j] * lever;
       contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
-      const double kn = P.laws[P.law[k]].kn;
-      if (excludesResolvedForce(i, reach - r, kn)) s.flags[i] |= kResolvedForceOff;
-      if (excludesResolvedForce(j, reach - r, kn)) s.flags[j] |= kResolvedForceOff;
+      if (excludesResolvedForce(i, reach - r, law.kn)) s.flags[i] |= kResolvedForceOff;
+      if (excludesResolvedForce(j, reach - r, law.kn)) s.flags[j] |= kResolvedForceOff;
     }
     if (lubricating) {
       PairState st;
@@ -220,6 +223,7 @@ void DemSolver::computeForces(double dt)
           noteOverlap(overlap / (2 * a), s.id[i], -1 - f);
           F += c.normal + c.tangential;
           T -= dist * cross(n, c.tangential);
+          T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, s.invInertia[i], dt);
           ++wallContacts;
           if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
         }

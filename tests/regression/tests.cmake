@@ -80,6 +80,8 @@ vp_bad_input(particles_missing_file 1 "option -particles_file: cannot open" -opt
              -particles_file ${VP_DEM_DATA}/no_such_file.csv)
 vp_bad_input(contact_restitution 1 "option -contact_restitution: must be in \\(0, 1\\], got 1.5"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution 1.5)
+vp_bad_input(contact_rolling_friction 1 "option -contact_rolling_friction: must be in \\[0, 1\\], got -0.1"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_rolling_friction -0.1)
 vp_bad_input(contact_no_stiffness 1 "option -contact_tc: a DEM-only run needs a contact stiffness"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_tc 0)
 # A periodic axis shorter than the particle halo (a 2 mm sphere in a 2 mm periodic box): a sphere

@@ -1,6 +1,7 @@
 // The contact law as a kernel (contactForce) and through the DEM: tangential restitution against
 // the exact linear-spring result, the lubrication hand-off (a lubricated rebound does not depend
-// on the contact time), the lubrication stability bound, and the free-slip wall rule.
+// on the contact time), the lubrication stability bound, the free-slip wall rule, and the rolling
+// resistance (kernel and a sphere rolling to rest on a floor).
 #include "../support/DemFixtures.hpp"
 #include "vp/core/Error.hpp"
 #include <catch2/catch.hpp>
@@ -48,6 +49,71 @@ TEST_CASE("contactForce: spring-dashpot, tangential spring, Coulomb cap", "[cont
     CHECK(spring.z == 0);
     CHECK(spring.x == 1e-5);
   }
+}
+
+TEST_CASE("rollingTorque: against the relative rolling, capped so that it cannot reverse it", "[contact]")
+{
+  const Vec3 n{0, 0, 1};
+  const double load = 2.0, muR = 0.1, radius = 1e-3, invI = 1e8, dt = 1e-5;
+  // Rolling about y plus a twist about n: only the rolling part is resisted.
+  const Vec3 t = rollingTorque(n, {0, 50, 7}, load, muR, radius, invI, dt);
+  CHECK(t.x == 0);
+  CHECK(t.z == 0);
+  CHECK(t.y == Approx(-muR * radius * load).epsilon(1e-14));
+  // A nearly stopped rolling: the torque halves it within the step, no more.
+  const Vec3 slow = rollingTorque(n, {0, 0.05, 0}, load, muR, radius, invI, dt);
+  CHECK(slow.y == Approx(-0.5 * 0.05 / (dt * invI)).epsilon(1e-14));
+  CHECK(norm(rollingTorque(n, {0, 50, 0}, load, 0, radius, invI, dt)) == 0);
+}
+
+namespace {
+
+// A sphere (a = 1 mm) set rolling at v0 along a floor under gravity, DEM only, for `time`: the
+// distance it rolls before it stops (|v| < 1 % of v0; NaN if it does not), its largest speed over
+// the second half of the run (a chattering torque would show here), and its final speed.
+struct Roll {
+  double distance, speedLate, speed;
+};
+Roll rollOut(double muR, double v0, double time)
+{
+  Config c = boxConfig({0, 0, 0}, {0.1, 0.01, 0.01}, {4, 4, 4});
+  c.gravity = {0, 0, -9.81};
+  ParticleConfig pc = contactConfig(2e-4, 0.3, 0.5);
+  pc.contact.rollingFriction = muR;
+  const double a = 1e-3;
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  // Resting on the floor, spinning as it rolls (w_y = v0 / a): no slip from the start.
+  DemSolver dem(grid, c, pc, {sphere(0, {0.01, 0.005, a}, a, 2500, {v0, 0, 0}, {0, v0 / a, 0})});
+  const ParticleStore& s = dem.particles();
+  const double dt = 4e-6;
+  Roll r{NAN, 0, 0};
+  for (double t = 0; t < time; t += dt) {
+    dem.advance(t, dt);
+    if (std::isnan(r.distance) && std::fabs(s.v[0].x) < 0.01 * v0) r.distance = s.x[0].x - 0.01;
+    if (t > 0.5 * time) r.speedLate = std::max(r.speedLate, norm(s.v[0]));
+  }
+  r.speed = s.v[0].x;
+  return r;
+}
+
+} // namespace
+
+TEST_CASE("Rolling resistance: a sphere rolling on a floor decelerates at (5/7) mu_r g", "[contact][dem]")
+{
+  // The torque mu_r a m g against the rolling, with the rolling constraint v = w a, decelerates the
+  // sphere at mu_r g / (1 + I / (m a^2)) = (5/7) mu_r g: it stops after v0^2 / (2 (5/7) mu_r g).
+  const double v0 = 0.05, g = 9.81;
+  for (double muR : {0.05, 0.2}) {
+    const Roll r = rollOut(muR, v0, 1.0);
+    const double expect = v0 * v0 / (2 * 5.0 / 7.0 * muR * g);
+    INFO("mu_r = " << muR << ": rolled " << r.distance << " m, expected " << expect << "; largest speed late "
+                    << r.speedLate << " m/s");
+    CHECK(r.distance == Approx(expect).epsilon(0.01));
+    CHECK(r.speedLate < 1e-6 * v0);  // at rest: the capped torque does not chatter
+  }
+  // Without it the sphere keeps rolling.
+  const Roll free = rollOut(0, v0, 0.05);
+  CHECK(free.speed > 0.99 * v0);
 }
 
 namespace {

@@ -3,7 +3,8 @@
 // contact time (-contact_tc or -contact_tc_steps, stiffness per pair mass) or directly (-contact_kn,
 // -contact_kn_wall); the normal damping always gives the restitution -contact_restitution.
 // Tangential: from a tangential restitution xi_t (-contact_restitution_t) with the tangential mass
-// (2/7) m*, or, when it is not given, from the ratios k_t/k_n and gamma_t/gamma_n.
+// (2/7) m*, or, when it is not given, from the ratios k_t/k_n and gamma_t/gamma_n. Rolling
+// resistance: a torque against the relative rolling (-contact_rolling_friction).
 
 namespace vp {
 
@@ -24,6 +25,7 @@ struct ContactConfig {
   double ktRatio = 2.0 / 7.0; // k_t / k_n (without xi_t)
   double gtRatio = 0.5;       // gamma_t / gamma_n (without xi_t)
   double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
+  double rollingFriction = 0; // mu_r: rolling resistance torque mu_r R* k_n delta (0: none)
   ContactHydro hydro = ContactHydro::Limit;  // measured: docs/collisions.md
 
   bool stiffnessGiven() const { return tc > 0 || tcSteps > 0 || kn > 0; }
