@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # The full immersed dam breaks (docs/dam_break.md): the loose and the dense column at N cells per
 # diameter (default 8) until they come to rest (the 99th-percentile front slower than 0.1 d/s over
-# 0.5 s: -collapse_rest_speed) or time T (default 10 s), then scripts/plot_dam_break into
-# docs/validation. Checkpoints every 250 steps: a run cut short continues with -restart.
+# 0.5 s: -collapse_rest_speed) or time T (default 30 s; at d/dx 6 the dense column rested at 14.9 s),
+# then scripts/plot_dam_break into docs/validation. Checkpoints every 250 steps: a run cut short
+# continues with -restart.
 # usage (through scripts/validate): scripts/validate dam_break [N [T]]
 # Cost on 2 cores (measured 2026-11-23): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per
 # simulated second), d/dx 8 about 0.84 s (14 minutes per simulated second), for each column.
 set -euo pipefail
-n=${1:-8}; t=${2:-10}
+n=${1:-8}; t=${2:-30}
 cd "$VP_ROOT"
 grid="$((64 * n)),$((4 * n)),$((20 * n))"
 labels=()
