@@ -32,7 +32,7 @@ ContactConfig readContactOptions()
   k.gtRatio = o.real("-contact_damping_t_ratio", k.gtRatio, "Tangential / normal damping gamma_t/gamma_n (without -contact_restitution_t)");
   k.roughness = o.real("-contact_roughness", k.roughness, "Surface gap at which contact starts, fraction of the (mean) diameter");
   k.rollingFriction = o.real("-contact_rolling_friction", k.rollingFriction,
-                             "Rolling resistance mu_r: a torque mu_r R* F_n against the relative rolling (0: none)");
+                             "Rolling resistance mu_r: a torque mu_r R* k_n delta against the relative rolling (0: none)");
   k.hydro = static_cast<ContactHydro>(o.choice("-contact_hydro", {"keep", "exclude", "limit"}, static_cast<int>(k.hydro),
                                                "Resolved hydrodynamic force during contact: keep, exclude (buoyancy stays), "
                                                "limit (excluded beyond the buoyant-weight overlap)"));

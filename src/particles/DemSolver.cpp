@@ -160,8 +160,7 @@ void DemSolver::computeForces(double dt)
       noteOverlap((reach - r) / (2 * std::min(s.radius[i], s.radius[j])), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
       const Vec3 lever = scale * cross(n, f.tangential);
-      const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR,
-                                      s.radius[i] * s.radius[j] / (s.radius[i] + s.radius[j]),
+      const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR, s.radius[i], s.radius[j],
                                       s.invInertia[i] + s.invInertia[j], dt);
       torqueI = roll - s.radius[i] * lever;
       torqueJ = -roll - s.radius[j] * lever;
@@ -223,7 +222,7 @@ void DemSolver::computeForces(double dt)
           noteOverlap(overlap / (2 * a), s.id[i], -1 - f);
           F += c.normal + c.tangential;
           T -= dist * cross(n, c.tangential);
-          T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, s.invInertia[i], dt);
+          T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, 0, s.invInertia[i], dt);
           ++wallContacts;
           if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
         }

@@ -56,14 +56,14 @@ TEST_CASE("rollingTorque: against the relative rolling, capped so that it cannot
   const Vec3 n{0, 0, 1};
   const double load = 2.0, muR = 0.1, radius = 1e-3, invI = 1e8, dt = 1e-5;
   // Rolling about y plus a twist about n: only the rolling part is resisted.
-  const Vec3 t = rollingTorque(n, {0, 50, 7}, load, muR, radius, invI, dt);
+  const Vec3 t = rollingTorque(n, {0, 50, 7}, load, muR, radius, 0, invI, dt);
   CHECK(t.x == 0);
   CHECK(t.z == 0);
   CHECK(t.y == Approx(-muR * radius * load).epsilon(1e-14));
   // A nearly stopped rolling: the torque halves it within the step, no more.
-  const Vec3 slow = rollingTorque(n, {0, 0.05, 0}, load, muR, radius, invI, dt);
+  const Vec3 slow = rollingTorque(n, {0, 0.05, 0}, load, muR, radius, 0, invI, dt);
   CHECK(slow.y == Approx(-0.5 * 0.05 / (dt * invI)).epsilon(1e-14));
-  CHECK(norm(rollingTorque(n, {0, 50, 0}, load, 0, radius, invI, dt)) == 0);
+  CHECK(norm(rollingTorque(n, {0, 50, 0}, load, 0, radius, 0, invI, dt)) == 0);
 }
 
 namespace {

@@ -68,17 +68,18 @@ inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, 
 }
 
 // Rolling resistance of one contact (no history): a torque on the particle of magnitude
-// muR R* k_n delta (R* = a_i a_j / (a_i + a_j), a_i at a wall; the elastic load, so the dashpot's pull
-// at release does not count) against the relative rolling w_rel = w_i - w_j in the tangent plane,
-// the partner getting the opposite. A constant torque would reverse a nearly stopped rolling at every
-// step and make it chatter, so it is capped, |T| <= |w_rel| / (2 dt (1/I_i + 1/I_j)): a damper that
+// muR R* k_n delta (R* = a_i a_j / (a_i + a_j); aj = 0 for a wall: R* = a_i; the elastic load, so
+// the dashpot's pull at release does not count) against the relative rolling w_rel = w_i - w_j in
+// the tangent plane, the partner getting the opposite. A constant torque would reverse a nearly
+// stopped rolling at every step and make it chatter, so it is capped, |T| <= |w_rel| / (2 dt (1/I_i + 1/I_j)): a damper that
 // halves w_rel per step. (Capped at a full stop per step, the Verlet step's predicted velocities
 // and the tangential spring kept a stopped sphere creeping backwards at 7e-7 m/s, measured.) A
 // sphere rolling on a plane decelerates at (5/7) muR g and then rests (test_contact.cpp).
-inline Vec3 rollingTorque(const Vec3& n, const Vec3& wRel, double load, double muR, double reducedRadius,
+inline Vec3 rollingTorque(const Vec3& n, const Vec3& wRel, double load, double muR, double ai, double aj,
                           double invInertiaSum, double dt)
 {
   if (muR == 0) return {};
+  const double reducedRadius = aj > 0 ? ai * aj / (ai + aj) : ai;
   const Vec3 wt = wRel - dot(wRel, n) * n;
   const double w = std::sqrt(dot(wt, wt));
   if (w == 0) return {};
