@@ -8,7 +8,8 @@
   gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
   oblique:     dry (Foerster glass, DEM only) and wet (Joseph & Hunt steel and glass in glycerol-water)
                impacts, Psi_2 and Psi_out against Psi_in with the rigid-body lines
-  calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres, parallel, rotating):
+  calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres at five positions of
+               their gap on the grid, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c and sub-steps
 usage: collisions.py [restitution|timestep|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse] [--fine] [--cases-only]
@@ -392,12 +393,13 @@ def calib_geometry(mode, eps):
     return bc, one + ["-particle_angular_velocity", "0,%r,0" % (U / A)], U
 
 
-def pair_file(out, eps, v):
-    """Two spheres of infinite mass approaching each other along x, each at v/2, gap SHRINK eps a."""
+def pair_file(out, eps, v, shift=0.0):
+    """Two spheres of infinite mass approaching each other along x, each at v/2, gap SHRINK eps a,
+    the gap centred `shift` (a length) beyond the face plane x = 2."""
     os.makedirs(out, exist_ok=True)
     f = os.path.join(out, "pair.csv")
     gap = SHRINK * eps * A
-    x0 = 2 - A - gap / 2
+    x0 = 2 + shift - A - gap / 2
     with open(f, "w") as o:
         o.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n")
         o.write("0,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0, A, v / 2))
@@ -416,21 +418,22 @@ def calib_value(mode, row, speed, resolved=True):
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
-    tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller)."""
+    tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller).
+    `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre)."""
     n = 4 * r
     bc, one, speed = calib_geometry(mode, eps)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
-    tag += "" if shear is None else "_s%g" % shear
+    tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align)
     out = "/tmp/vp_col_cal_" + tag
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
               "-contact_roughness", 1e-4] + bc
     if lub == "none":
         dt = 0.5 / r ** 2 / MU
-        part = ["-particles_file", pair_file(out + "_in", eps, speed), "-particles_fixed"] if one is None else one
+        part = ["-particles_file", pair_file(out + "_in", eps, speed, align / r), "-particles_fixed"] if one is None else one
         rows = run(out, *common, *part, *CASE_FLUID, "-time_dt", dt, "-time_final", RELAX, "-lub_model", "none", case="none")
         return calib_value(mode, rows[-1], speed)
     # The correction at the final gap: the same spheres placed there (DEM only, one evaluation).
@@ -443,6 +446,18 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None):
                "-lub_activation_cells", cells, "-lub_llcm_r0", r0,
                *([] if shear is None else ["-lub_shear_activation_cells", shear]), np=1, case="none")
     return calib_value(mode, rows[0], speed, resolved=False)
+
+
+# A pair's squeeze through a gap narrower than a cell depends on where the gap lies on the grid
+# (docs/collisions.md): read at gap centres from a face plane (0) to a cell centre (0.5 cells), which
+# by symmetry covers every position; the mean over them is what the pairs of a moving packing meet.
+ALIGNMENTS = [0.0, 0.125, 0.25, 0.375, 0.5]
+
+
+def pair_resolved(eps, r):
+    """The pair's resolved resistance at each gap position and its mean over a cell (trapezoid rule)."""
+    v = [calib_run("pair", eps, r, align=s) for s in ALIGNMENTS]
+    return v, (sum(v) - (v[0] + v[-1]) / 2) / (len(v) - 1)
 
 
 ACTIVATIONS = [0.1, 0.15, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5]  # cells, for the scan (squeeze)
@@ -461,9 +476,20 @@ def calibration():
         ex = [exact(e) for e in G]
         ax.loglog(G, ex, "k-", lw=2, label="exact")
         for k, r in enumerate(res_list[mode]):
-            resolved = [calib_run(mode, e, r) for e in G]
             c = "C%d" % k
-            ax.loglog(G, resolved, "o--", color=c, mfc="none", label="resolved, d/dx %d" % r)
+            if mode == "pair":
+                by_position = [pair_resolved(e, r) for e in G]
+                resolved = [mean for _, mean in by_position]
+                ax.fill_between(G, [min(v) for v, _ in by_position], [max(v) for v, _ in by_position], color=c,
+                                alpha=0.15, label="resolved, range over the gap's position, d/dx %d" % r)
+                for e, x, (v, mean) in zip(G, ex, by_position):
+                    print("calibration: pair     d/dx %2d eps %5g  exact %8.4f  resolved at gap centres %s cells from a"
+                          " face plane: %s %%; mean %+.1f %%" % (r, e, x, "/".join("%g" % a for a in ALIGNMENTS),
+                          " / ".join("%+.1f" % (100 * (y / x - 1)) for y in v), 100 * (mean / x - 1)), flush=True)
+            else:
+                resolved = [calib_run(mode, e, r) for e in G]
+            ax.loglog(G, resolved, "o--", color=c, mfc="none",
+                      label="resolved%s, d/dx %d" % (", mean over positions" if mode == "pair" else "", r))
             # The defaults (squeeze 0.18, tangential 0.06 cells) and the sharp-interface codes' 1.5 cells.
             for cells, mark in ((DEFAULT_CELLS, "s-"), (1.5, "^:")):
                 shear = cells if cells > DEFAULT_CELLS else None

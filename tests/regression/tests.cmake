@@ -201,6 +201,9 @@ vp_case_run(steady_stokes_fitted_start 2 --expect kinetic_energy=9.948675781e-08
 # The lubrication correction's calibration at d/dx 8 for one gap (docs/collisions.md).
 add_test(NAME calibration_normal_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_calibration.py)
 set_tests_properties(calibration_normal_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+# Two spheres at a resolved gap: the same force wherever the gap lies on the grid (docs/collisions.md).
+add_test(NAME calibration_pair_position_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_pair_position.py)
+set_tests_properties(calibration_pair_position_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
 
 # --- Checkpoint/restart -------------------------------------------------------------------------
 set(VP_CHECK_RESTART /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py)
