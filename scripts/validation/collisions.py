@@ -471,6 +471,7 @@ def calibration():
     res_list = {m: [8, 12] + ([16, 24] if fine and m == "normal" else [16] if fine else []) for m in MODES}
     gaps = {m: NORMAL_GAPS if m == "normal" else SHEAR_GAPS if m in TANGENTIAL else GAPS for m in MODES}
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
+    by_gap = {}  # (d/dx, eps): the pair's error (%) at each gap position
     for ax, (mode, (exact, title)) in zip(axes.flat, MODES.items()):
         G = gaps[mode]
         ex = [exact(e) for e in G]
@@ -483,6 +484,7 @@ def calibration():
                 ax.fill_between(G, [min(v) for v, _ in by_position], [max(v) for v, _ in by_position], color=c,
                                 alpha=0.15, label="resolved, range over the gap's position, d/dx %d" % r)
                 for e, x, (v, mean) in zip(G, ex, by_position):
+                    by_gap[(r, e)] = [100 * (y / x - 1) for y in v]
                     print("calibration: pair     d/dx %2d eps %5g  exact %8.4f  resolved at gap centres %s cells from a"
                           " face plane: %s %%; mean %+.1f %%" % (r, e, x, "/".join("%g" % a for a in ALIGNMENTS),
                           " / ".join("%+.1f" % (100 * (y / x - 1)) for y in v), 100 * (mean / x - 1)), flush=True)
@@ -518,6 +520,22 @@ def calibration():
     fig.suptitle("Resolved force and resolved + LLCM vs exact Stokes resistances (box 4 d)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_calibration.png"), dpi=120)
+    pair_position_figure(by_gap)
+
+
+def pair_position_figure(by_gap):
+    """The pair's resolved force against where its gap lies on the grid, one line per gap and grid."""
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for (r, e), err in sorted(by_gap.items()):
+        ax.plot(ALIGNMENTS, err, "o-" if r == 8 else "s--", color="C%d" % GAPS.index(e),
+                label="eps %g, d/dx %d (gap %.2g cells)" % (e, r, e * A * r))
+    ax.axhline(0, color="k", lw=1)
+    ax.set_xlabel("gap centre: cells from a face plane (0.5 = a cell centre)")
+    ax.set_ylabel("resolved force against exact (%)")
+    ax.set_title("Two spheres approaching in Stokes flow: the gap's position on the grid", fontsize=10)
+    ax.legend(fontsize=6, ncol=2)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "lubrication_pair_position.png"), dpi=120)
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
