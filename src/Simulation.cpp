@@ -9,6 +9,7 @@
 #include "vp/io/RunRecord.hpp"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <csignal>
 #include <map>
 #include <sstream>
@@ -204,15 +205,21 @@ double Simulation::stepBound(double rate) const
   const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
   // Without -time_dt_max: the viscous time of a cell, and at least ten steps over the run (a flow
   // at rest has no other bound).
-  double dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : std::min(hmin * hmin / cfg_.fluid.nu(), 0.1 * cfg_.time.final);
+  const double dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : std::min(hmin * hmin / cfg_.fluid.nu(), 0.1 * cfg_.time.final);
+  return std::min({dt, motionStep(cfg_.time.cfl, rate), cfg_.time.final});
+}
+
+double Simulation::motionStep(double cfl, double rate) const
+{
+  double dt = std::numeric_limits<double>::infinity();
   // Moving walls count too: they set the flow in motion from rest.
   for (int f = 0; f < 6; ++f)
     for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
-  if (rate > 0) dt = std::min(dt, cfg_.time.cfl / rate);
+  if (rate > 0) dt = cfl / rate;
   // Particles released from rest: a step may not let gravity move them more than cfl cells.
-  const double g = norm(cfg_.gravity);
-  if (particleCfg_.any() && g > 0) dt = std::min(dt, std::sqrt(2 * cfg_.time.cfl * hmin / g));
-  return std::min(dt, cfg_.time.final);
+  const double g = norm(cfg_.gravity), hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
+  if (particleCfg_.any() && g > 0) dt = std::min(dt, std::sqrt(2 * cfl * hmin / g));
+  return dt;
 }
 
 double Simulation::nextDt() const
@@ -237,7 +244,9 @@ void Simulation::buildMask(double dt)
 {
   StageScope stage(Stage::Penalization);
   dem_->syncGhosts();
-  penalization_->build(dem_->particles(), dt);
+  // lambda's floor: 20 / dt of the step at CFL 0.5 that the present motion allows, not of the step
+  // taken (docs/coupling.md).
+  penalization_->build(dem_->particles(), dt, 20 / motionStep(0.5, std::max(fluid_->stats().maxRate, particleRate())));
 }
 
 void Simulation::penalize()

@@ -61,6 +61,8 @@ private:
   void hydroForce(double dt);
   void buildMask(double dt);  // chi, u_s, theta from the particles' current state
   double particleRate() const;  // max over particles of (|U_c| + |Omega| a) / h_c (collective)
+  // The step at `cfl` that moving walls, the CFL rate `rate` and gravity on particles allow (inf: none).
+  double motionStep(double cfl, double rate) const;
   // The step -time_dt gives, or the bounds of the grid (CFL at this rate, viscous, -time_dt_max),
   // the walls and gravity; also before the solvers exist (rate 0).
   double stepBound(double rate) const;

@@ -15,8 +15,10 @@ PenalizationConfig PenalizationConfig::read()
   OptionGroup o("Volume penalization of the particles");
   c.mask = static_cast<Mask>(o.choice("-penalization_mask", {"smooth", "sharp"}, 0, "Mask of a sphere on the faces"));
   c.lambda = o.real("-penalization_lambda", c.lambda,
-                    "Penalization coefficient lambda (1/s); 0: max(400 nu / h^2, 20 / dt), a penetration length of at most h/20 "
-                    "and the fluid inside a particle following it to 5 % within every step");
+                    "Penalization coefficient lambda (1/s); 0: max(400 nu / h^2, 20 / dt_0.5), a penetration length of at most h/20 "
+                    "and the fluid inside a particle following it within 1/20 of dt_0.5, the step at CFL 0.5 of the "
+                    "present motion (fluid, particles, walls, gravity), not of the step taken: results converge in dt "
+                    "(docs/coupling.md)");
   c.width = o.real("-penalization_width", c.width, "Width of the smooth mask (cells)");
   c.weightedProjection = o.choice("-penalization_projection", {"plain", "weighted"}, 0,
                                   "Pressure projection of a penalized step: plain (the constant-coefficient Poisson equation, any "
@@ -54,7 +56,7 @@ Penalization::~Penalization()
   VecDestroy(&chi_);
 }
 
-void Penalization::build(const ParticleStore& s, double dt)
+void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
 {
   const Grid& g = grid_;
   VP_CALL(VecSet(chi_, 0));
@@ -106,10 +108,12 @@ void Penalization::build(const ParticleStore& s, double dt)
     }
   }
   VP_CALL(VecCopy(chi_, theta_));
-  // From the grid, lambda also holds the fluid inside a particle to its motion within the step
-  // (theta = lambda dt >= 20): at a small viscosity or step, 400 nu / h^2 alone left the mask
-  // porous over a step and lost most of the added mass (docs/coupling.md).
-  stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, 20 / dt);
+  // From the grid, lambda also holds the fluid inside a particle to its motion within a twentieth of
+  // the time the flow takes to cross half a cell (the floor): at a small viscosity 400 nu / h^2 alone
+  // left the mask porous and lost most of the added mass. The floor follows the motion, not the step
+  // taken: a stiffer mask seals a sub-cell gap, and a lambda that grew as the step shrank kept
+  // rebounds from converging in the step (docs/coupling.md).
+  stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, lambdaFloor);
   VP_CALL(VecScale(theta_, stepLambda_ * dt));
   {
     // A wall face keeps its boundary value: no penalization there.

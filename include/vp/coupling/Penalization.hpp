@@ -16,7 +16,7 @@ namespace vp {
 
 struct PenalizationConfig {
   enum class Mask { Smooth, Sharp } mask = Mask::Smooth;
-  double lambda = 0;  // [1/s]; 0: max(400 nu / h^2, 20 / dt), set per step by build()
+  double lambda = 0;  // [1/s]; 0: max(400 nu / h^2, the motion's floor), set per step by build()
   double width = 1;   // smoothing width in cells
   bool weightedProjection = false;  // -penalization_projection weighted (Projection.hpp)
 
@@ -40,8 +40,10 @@ public:
   double support() const { return support_; }
 
   // chi, u_s, theta = chi lambda dt and theta u_s at the owned faces from the particles' x, v, w
-  // (owned and ghost). theta is zero on faces fixed by a wall.
-  void build(const ParticleStore& s, double dt);
+  // (owned and ghost). theta is zero on faces fixed by a wall. lambdaFloor [1/s]: the least lambda
+  // from the grid, set by the flow's motion (Simulation::buildMask).
+  void build(const ParticleStore& s, double dt, double lambdaFloor);
+  double lambda() const { return stepLambda_; }  // of the step last built
   // sums (kHydroSums per particle) resized and zeroed, then the force and torque of the
   // penalization on each particle, rho chi lambda (u* - u_s) dV, from the predicted velocity u*.
   void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const;
