@@ -137,12 +137,13 @@ def restitution():
 
 def timestep():
     """e at nominal St 40, 152 and 500 (impact St about 27, 130 and 450), d/dx 8, against the fluid
-    step: the case's contact, stretched over 10 fluid steps (its duration shrinks with the step),
-    against a real, short contact (50 us, resolved by the sub-steps, shorter than any fluid step)."""
+    step: the case's contact, stretched over 10 fluid steps (its duration shrinks with the step); with
+    --short also a real, short contact (50 us, resolved by the sub-steps, shorter than any fluid step)."""
     cfls = (0.5, 0.25, 0.125, 0.0625)
+    contacts = (("stretched", [], "o-"),) + ((("short", SHORT, "s--"),) if "--short" in sys.argv else ())
     fig, ax = plt.subplots(figsize=(8.5, 4.2))
     for k, st in enumerate((40, 152, 500)):
-        for name, opts, mark in (("stretched", [], "o-"), ("short", SHORT, "s--")):
+        for name, opts, mark in contacts:
             pts = []
             for cfl in cfls:
                 out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts, label="dt_%s_st%d_cfl%g" % (name, st, cfl))
@@ -159,6 +160,7 @@ def timestep():
     ax.set_ylabel("e / e_dry")
     ax.set_title("Rebound against the fluid step, d/dx 8 (bands: exp(-35/St) +- 0.1)", fontsize=9)
     ax.invert_xaxis()
+    ax.set_ylim(0, 1)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "restitution_timestep.png"), dpi=120)
@@ -319,8 +321,13 @@ def sensitivity():
                 ("t_c 8 steps", ["-contact_tc_steps", 8], 12), ("t_c 20 steps", ["-contact_tc_steps", 20], 12),
                 ("sub-steps 400", ["-dem_substeps", 400], 12)]
     for st in (152, 40) if "--fine" in sys.argv else (152,):
+        # The mask's stiffness halved and doubled: lambda fixed at a multiple of its default at the
+        # release (max(400 nu/h^2, 40 u/h) at d/dx 12, the floor of a CFL-0.5 motion).
+        h, mu = D3 / 12, STEEL * 0.585 * D3 / (9 * st)
+        lam = max(400 * mu / RHO_F / h ** 2, 40 * 0.585 / h)
+        stiff = [("lambda x%g" % f, ["-penalization_lambda", f * lam], 12) for f in (0.5, 2)]
         base = None
-        for name, opts, r in variants:
+        for name, opts, r in variants + stiff:
             label = None if name in ("reference", "d/dx 8", "d/dx 16") else "sens_st%d_%s" % (st, name.replace(" ", "_").replace("/", ""))
             out = restitution_run(st, HYDRO, r=r, extra=opts, label=label)
             if out is None:
