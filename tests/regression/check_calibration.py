@@ -6,13 +6,10 @@ closing on a wall in Stokes flow, with the cases' fluid set-up (weighted project
 default activation (0.18 cells) must be within 10 % of the exact value, the calibration's accuracy
 over eps 0.01-0.05 and d/dx 8-16 (measured here: +7.6 % and +9.8 %; without the correction -68 %
 and -43 %). Uses scripts/validation/collisions.py."""
-import os, sys
-root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-os.environ.setdefault("VP_ROOT", root)
-os.environ["NP"] = "1"
-sys.argv = sys.argv[:1]
-sys.path.insert(0, os.path.join(root, "scripts", "validation"))
-import collisions as c  # noqa: E402
+import sys
+from study import collisions
+
+c = collisions(np=1)
 
 r, ok = 8, True
 for eps in (0.01, 0.02):

@@ -6,13 +6,10 @@ resolved force must not depend on where the gap lies on the grid (centred on a f
 cell centre: within 3 %; measured 0.4 %) and must be within 20 % of Brenner's two-sphere value
 (measured +15.3 / +15.8 %: the 4 d periodic box adds about 10 points, the smooth mask 7). Uses
 scripts/validation/collisions.py."""
-import os, sys
-root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-os.environ.setdefault("VP_ROOT", root)
-os.environ["NP"] = "1"
-sys.argv = sys.argv[:1]
-sys.path.insert(0, os.path.join(root, "scripts", "validation"))
-import collisions as c  # noqa: E402
+import sys
+from study import collisions
+
+c = collisions(np=1)
 
 r, eps = 8, 0.5
 exact = c.TWO[eps]

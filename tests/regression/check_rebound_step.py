@@ -6,13 +6,10 @@ not the step; when it followed the step (floor 20/dt) e/e_dry fell from 0.445 to
 rebound at CFL 1/16). Measured with the present floor: 0.445 and 0.436. Pass: both rebound and
 differ by at most 0.03, the convergence measured at a fixed stiffness. Uses
 scripts/validation/collisions.py."""
-import os, sys
-root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-os.environ.setdefault("VP_ROOT", root)
-os.environ["NP"] = "2"
-sys.argv = sys.argv[:1]
-sys.path.insert(0, os.path.join(root, "scripts", "validation"))
-import collisions as c  # noqa: E402
+import sys
+from study import collisions
+
+c = collisions(np=2)
 
 e = {}
 for cfl in (0.5, 0.125):
