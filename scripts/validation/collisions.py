@@ -88,6 +88,9 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
 
 ST_LIST = [5, 20, 30, 40, 70, 100, 152, 300, 500]
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
+# Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
+# cases keep the seed's 2e-4 d (docs/collisions.md).
+ROUGH_GONDRET = ["-contact_roughness", 5e-5]
 
 
 def restitution():
@@ -108,11 +111,14 @@ def restitution():
     sets = ((HYDRO, [], "s", ST_LIST), ("keep", [], "o", [40, 152, 500]), (HYDRO, PLAIN, "^", [40, 152, 500]))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
         sets = sets[:1]
+    if "--roughness" in sys.argv:  # the cases' set-up and the same with Gondret's reported roughness
+        sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST))
     for hydro, extra, mark, st_list in sets:
-        name = hydro + (", plain projection" if extra else "")
+        name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else "")
         pts = []
         for st in st_list:
-            r = restitution_run(st, hydro, extra=extra)
+            label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
+            r = restitution_run(st, hydro, extra=extra, label=label)
             if r is None:
                 print("restitution: St %g %s: no contact within the run (a creeping approach: no rebound)" % (st, name), flush=True)
                 continue
