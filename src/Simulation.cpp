@@ -148,6 +148,7 @@ void Simulation::restore(const CheckpointReader& cp)
   fluid_->finishStep();
   step_ = r.step;
   time_ = r.time;
+  penalizationFloor_ = r.penalizationFloor;
   snapshots_.resume(r.lastOutputStep, r.nextOutputTime);
   // A run that did not checkpoint by time before starts counting from here.
   checkpointSchedule_.resume(step_, r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt);
@@ -179,6 +180,7 @@ void Simulation::checkpoint()
   r.nextOutputTime = snapshots_.nextTime();
   r.nextCheckpointTime = checkpointSchedule_.nextTime();
   r.lastOutputStep = snapshots_.lastStep();
+  r.penalizationFloor = penalizationFloor_;
   if (fields_) r.fieldSnapshots = fields_->snapshotList();
   if (particleWriter_) r.particleSnapshots = particleWriter_->snapshotList();
   checkpoints_->write(grid_, cfg_.bc, r, fluidState(),
@@ -244,9 +246,10 @@ void Simulation::buildMask(double dt)
 {
   StageScope stage(Stage::Penalization);
   dem_->syncGhosts();
-  // lambda's floor: 20 / dt of the step at CFL 0.5 that the present motion allows, not of the step
-  // taken (docs/coupling.md).
-  penalization_->build(dem_->particles(), dt, 20 / motionStep(0.5, std::max(fluid_->stats().maxRate, particleRate())));
+  // lambda's floor: 20 / dt of the step at CFL 0.5 that the motion allows, the largest so far (a
+  // stiffness that does not follow the step taken, nor change within a collision: docs/coupling.md).
+  penalizationFloor_ = std::max(penalizationFloor_, 20 / motionStep(0.5, std::max(fluid_->stats().maxRate, particleRate())));
+  penalization_->build(dem_->particles(), dt, penalizationFloor_);
 }
 
 void Simulation::penalize()

@@ -90,6 +90,7 @@ private:
   RunGuard guard_;
   double loopWall_ = 0;                            // wall time of the stepping loop
   double time_ = 0;
+  double penalizationFloor_ = 0;                   // the largest floor of lambda so far (buildMask)
   int step_ = 0;
   int firstStep_ = 0;       // step and time this run started from (0 unless restarted)
   int recordedStep_ = -1;   // last step written to the time series (-series_every)

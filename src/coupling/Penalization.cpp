@@ -17,8 +17,8 @@ PenalizationConfig PenalizationConfig::read()
   c.lambda = o.real("-penalization_lambda", c.lambda,
                     "Penalization coefficient lambda (1/s); 0: max(400 nu / h^2, 20 / dt_0.5), a penetration length of at most h/20 "
                     "and the fluid inside a particle following it within 1/20 of dt_0.5, the step at CFL 0.5 of the "
-                    "present motion (fluid, particles, walls, gravity), not of the step taken: results converge in dt "
-                    "(docs/coupling.md)");
+                    "fastest motion so far (fluid, particles, walls, gravity), not of the step taken: results converge in "
+                    "dt (docs/coupling.md)");
   c.width = o.real("-penalization_width", c.width, "Width of the smooth mask (cells)");
   c.weightedProjection = o.choice("-penalization_projection", {"plain", "weighted"}, 0,
                                   "Pressure projection of a penalized step: plain (the constant-coefficient Poisson equation, any "
@@ -112,7 +112,7 @@ void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
   // the time the flow takes to cross half a cell (the floor): at a small viscosity 400 nu / h^2 alone
   // left the mask porous and lost most of the added mass. The floor follows the motion, not the step
   // taken: a stiffer mask seals a sub-cell gap, and a lambda that grew as the step shrank kept
-  // rebounds from converging in the step (docs/coupling.md).
+  // rebounds from converging in the step (docs/coupling.md, Simulation::buildMask).
   stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, lambdaFloor);
   VP_CALL(VecScale(theta_, stepLambda_ * dt));
   {

@@ -168,6 +168,7 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   h5::writeAttribute(file, "particle_columns", kParticleColumns);
   const std::vector<double> r = packRun(run);
   h5::writeAttribute(file, kRunAttribute, r.data(), static_cast<int>(r.size()));
+  h5::writeAttribute(file, "penalization_floor", &run.penalizationFloor, 1);
   int n[3], types[6];
   double lo[3], hi[3];
   for (int d = 0; d < 3; ++d) n[d] = grid.n(d), lo[d] = grid.lo(d), hi[d] = grid.hi(d);
@@ -217,6 +218,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   MPI_Comm_rank(comm, &rank);
   std::string error;
   std::vector<double> header, rows, contacts, fieldSnaps, particleSnaps;
+  double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
     h5::QuietErrors quiet;
     hid_t file = -1;
@@ -276,14 +278,18 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
       else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
-    // Older checkpoints lack it: their set-up is not compared.
+    // Older checkpoints lack these: their set-up is not compared, their floor restarts from the state.
     if (error.empty()) h5::readAttribute(file, "setup_options", setup_);
+    if (error.empty()) h5::readAttribute(file, "penalization_floor", &floor, 1);
     if (file >= 0) H5Fclose(file);
   }
   broadcast(comm, error);
   if (!error.empty()) failOption("-restart", error);
   broadcast(comm, setup_);
+  header.push_back(floor);
   for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
+  run_.penalizationFloor = header.back();
+  header.pop_back();
   unpackRun(header, run_);
   run_.fieldSnapshots = fieldSnaps;
   run_.particleSnapshots = particleSnaps;

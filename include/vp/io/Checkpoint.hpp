@@ -22,6 +22,7 @@ struct RunState {
   double dtOld = 0;                       // the previous step (variable-step AB2)
   double nextOutputTime = 0, nextCheckpointTime = 0;
   int lastOutputStep = -1;
+  double penalizationFloor = 0;           // the largest floor of lambda so far (Simulation::buildMask)
   std::vector<double> fieldSnapshots;     // (step, time) of the field snapshots written so far
   std::vector<double> particleSnapshots;  // (step, time, count) of the particle snapshots
 };
