@@ -9,8 +9,8 @@
 #include "vp/io/RunRecord.hpp"
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <csignal>
+#include <limits>
 #include <map>
 #include <sstream>
 

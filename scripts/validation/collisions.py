@@ -3,18 +3,22 @@
   restitution: e(St) of a steel sphere (d = 3 mm, rho_p/rho 8.34) driven onto a wall, St 5-1000 by
                the viscosity, against e_dry exp(-35/St); the cases' set-up (limit, weighted projection),
                keep and the plain projection at 3 St
-  timestep:    e at St 27, 130 and 450 against the fluid step (CFL 0.5 to 1/16), d/dx 8: the case's
-               contact (stretched over 10 fluid steps) against a real, short one (50 us)
+  timestep:    e at St 27, 130 and 450 against the fluid step (CFL 0.5 to 1/16), d/dx 8, the case's
+               contact (stretched over 10 fluid steps); with --short also a real, short one (50 us)
   gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
   oblique:     dry (Foerster glass, DEM only) and wet (Joseph & Hunt steel and glass in glycerol-water)
                impacts, Psi_2 and Psi_out against Psi_in with the rigid-body lines
   calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres at five positions of
                their gap on the grid, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
-  sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c and sub-steps
-usage: collisions.py [restitution|timestep|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse] [--fine] [--cases-only]
+  sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
+               mask's stiffness (lambda x0.5, x2)
+usage: collisions.py [restitution|timestep|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse] [--fine]
+                     [--cases-only] [--roughness] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
+  --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
+  --short: timestep also with the short contact
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir

@@ -110,9 +110,9 @@ void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
   VP_CALL(VecCopy(chi_, theta_));
   // From the grid, lambda also holds the fluid inside a particle to its motion within a twentieth of
   // the time the flow takes to cross half a cell (the floor): at a small viscosity 400 nu / h^2 alone
-  // left the mask porous and lost most of the added mass. The floor follows the motion, not the step
-  // taken: a stiffer mask seals a sub-cell gap, and a lambda that grew as the step shrank kept
-  // rebounds from converging in the step (docs/coupling.md, Simulation::buildMask).
+  // left the mask porous and lost most of the added mass. The floor follows the fastest motion so far,
+  // not the step taken: a stiffer mask seals a sub-cell gap, and a lambda that grew as the step shrank
+  // kept rebounds from converging in the step (docs/coupling.md, Simulation::buildMask).
   stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, lambdaFloor);
   VP_CALL(VecScale(theta_, stepLambda_ * dt));
   {

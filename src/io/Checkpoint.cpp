@@ -286,11 +286,10 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   broadcast(comm, error);
   if (!error.empty()) failOption("-restart", error);
   broadcast(comm, setup_);
-  header.push_back(floor);
   for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
-  run_.penalizationFloor = header.back();
-  header.pop_back();
+  MPI_Bcast(&floor, 1, MPI_DOUBLE, 0, comm);
   unpackRun(header, run_);
+  run_.penalizationFloor = floor;
   run_.fieldSnapshots = fieldSnaps;
   run_.particleSnapshots = particleSnaps;
   std::map<std::int64_t, std::size_t> index;

@@ -41,7 +41,7 @@ public:
 
   // chi, u_s, theta = chi lambda dt and theta u_s at the owned faces from the particles' x, v, w
   // (owned and ghost). theta is zero on faces fixed by a wall. lambdaFloor [1/s]: the least lambda
-  // from the grid, set by the flow's motion (Simulation::buildMask).
+  // when no -penalization_lambda is given, set by the fastest motion so far (Simulation::buildMask).
   void build(const ParticleStore& s, double dt, double lambdaFloor);
   double lambda() const { return stepLambda_; }  // of the step last built
   // sums (kHydroSums per particle) resized and zeroed, then the force and torque of the
