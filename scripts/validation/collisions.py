@@ -28,6 +28,12 @@ res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
 E_DRY = 0.97
 HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it (the default)
 STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
+U_RELEASE = 0.585  # m/s: the e(St) study's release speed (Gondret's St 152 impact speed)
+
+
+def study_mu(st, d=D3):
+    """Viscosity (Pa s) that gives the nominal St to the steel sphere of diameter d at U_RELEASE."""
+    return STEEL * U_RELEASE * d / (9 * st)
 
 
 def run(out, *opts, case="restitution.opts", np=None):
@@ -74,8 +80,8 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
     """Steel sphere of diameter d at nominal St (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d
     box, released 3 d above the floor at 0.585 m/s. Returns (St at impact, e, u_in)."""
     r = r or res
-    a, u = d / 2, 0.585
-    mu = STEEL * u * d / (9 * st)
+    a, u = d / 2, U_RELEASE
+    mu = study_mu(st, d)
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
@@ -333,8 +339,8 @@ def sensitivity():
     for st in (152, 40) if "--fine" in sys.argv else (152,):
         # The mask's stiffness halved and doubled: lambda fixed at a multiple of its default at the
         # release (max(400 nu/h^2, 40 u/h) at d/dx 12, the floor of a CFL-0.5 motion).
-        h, mu = D3 / 12, STEEL * 0.585 * D3 / (9 * st)
-        lam = max(400 * mu / RHO_F / h ** 2, 40 * 0.585 / h)
+        h = D3 / 12
+        lam = max(400 * study_mu(st) / RHO_F / h ** 2, 40 * U_RELEASE / h)
         stiff = [("lambda x%g" % f, ["-penalization_lambda", f * lam], 12) for f in (0.5, 2)]
         base = None
         for name, opts, r in variants + stiff:
