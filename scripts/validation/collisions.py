@@ -100,7 +100,7 @@ ST_LIST = [5, 20, 30, 40, 70, 100, 152, 300, 500, 1000]
 
 
 def study_cfl(st):
-    """CFL of the e(St) runs at the release speed: 0.5, and 0.25 at St 1000 (impact Re 1100), where the
+    """CFL of the e(St) runs at the release speed: 0.5, and 0.25 at St 1000 (impact Re about 1040), where the
     liquid squeezed out at the impact, advected by the central scheme, passes the health check's CFL
     1.5 at 0.5; the rebound converges in the step (d/dx 12: 0.890 / 0.889 at CFL 0.25 / 0.125)."""
     return 0.25 if st >= 1000 else 0.5
