@@ -95,7 +95,7 @@ Config Config::read()
                                                  "particles come from it, grid and boundaries must match");
     c.checkpoint.every = o.integer("-checkpoint_every", c.checkpoint.every, "Steps between checkpoints (0: none)");
     c.checkpoint.dt = o.real("-checkpoint_dt", c.checkpoint.dt, "Simulated time between checkpoints (s; 0: none)");
-    c.checkpoint.keep = o.integer("-checkpoint_keep", c.checkpoint.keep, "Checkpoints of this run kept on disk, newest first");
+    c.checkpoint.keep = o.integer("-checkpoint_keep", c.checkpoint.keep, "Checkpoints kept in the output directory, newest first (with those of a restarted run's earlier pieces)");
     c.checkpoint.allowChanges = o.flag("-restart_allow_changes", false, "Continue a checkpoint whose set-up options differ "
                                                                         "(physics, particles) with a warning instead of an error");
   }

@@ -4,7 +4,9 @@
 #include "vp/core/Options.hpp"
 #include "vp/io/Hdf5.hpp"
 #include "vp/io/RunRecord.hpp"
+#include <algorithm>
 #include <cstdio>
+#include <dirent.h>
 #include <map>
 #include <tuple>
 #include <petscviewerhdf5.h>
@@ -121,7 +123,21 @@ void broadcast(MPI_Comm comm, std::vector<double>& v)
 
 } // namespace
 
-CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : comm_(comm), dir_(std::move(dir)), keep_(keep) {}
+CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : comm_(comm), dir_(std::move(dir)), keep_(keep)
+{
+  // A restart continues the count of the directory's checkpoints (a run in pieces keeps K in all).
+  std::map<long, std::string> found;
+  if (DIR* d = ::opendir(dir_.c_str())) {
+    while (const dirent* e = ::readdir(d)) {
+      const std::string name = e->d_name;  // checkpoint_<step>.h5, not _latest.h5 or a .h5.tmp
+      if (name.size() <= 14 || name.compare(0, 11, "checkpoint_") != 0 || name.compare(name.size() - 3, 3, ".h5") != 0) continue;
+      const std::string digits = name.substr(11, name.size() - 14);
+      if (digits.find_first_not_of("0123456789") == std::string::npos) found[std::stol(digits)] = dir_ + "/" + name;
+    }
+    ::closedir(d);
+  }
+  for (const auto& f : found) written_.push_back(f.second);
+}
 
 void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const BoundaryConfig& bc, const RunState& run,
                                  const FluidState& fluid, const std::vector<ParticleRecord>& owned)
@@ -203,6 +219,7 @@ void CheckpointWriter::write(const Grid& grid, const BoundaryConfig& bc, const R
     ::unlink(link.c_str());
     if (::symlink(name.c_str(), link.c_str()) != 0 || std::rename(link.c_str(), latest.c_str()) != 0)
       throw std::runtime_error("cannot point " + latest + " to " + name);
+    written_.erase(std::remove(written_.begin(), written_.end(), path), written_.end());  // a step written again
     written_.push_back(path);
     while (static_cast<int>(written_.size()) > keep_) {
       std::remove(written_.front().c_str());

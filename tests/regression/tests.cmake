@@ -233,14 +233,20 @@ vp_bad_input(checkpoint_keep 1 "option -checkpoint_keep: must be >= 1, got 0" -c
 vp_bad_input(restart_not_checkpoint 1 "option -restart: '.*taylor_green.opts' is not an HDF5 file"
              -restart ${VP_CASES}/taylor_green.opts)
 # Checkpoints by simulated time, and pruning: dt = 0.004 s, so -checkpoint_dt 0.02 writes at steps
-# 5, 10, 15, 20; -checkpoint_keep 2 leaves the last two, and checkpoint_latest.h5 points at step 20.
+# 5, 10, 15, 20; -checkpoint_keep 2 leaves the last two, and checkpoint_latest.h5 points at step 20;
+# continued to step 30, the restart counts the first piece's checkpoints: 25 and 30 are left.
 add_test(NAME checkpoint_dt_keep
          COMMAND sh -c "rm -rf ckpt_dt && ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --oversubscribe $<TARGET_FILE:vpsolve> \
                  -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 20 -monitor_every 0 -output_dt 0 -output_dir ckpt_dt -checkpoint_dt 0.02 -checkpoint_keep 2 \
                  && test ! -e ckpt_dt/checkpoint_000005.h5 && test ! -e ckpt_dt/checkpoint_000010.h5 \
                  && test -f ckpt_dt/checkpoint_000015.h5 && test -f ckpt_dt/checkpoint_000020.h5 \
                  && test $(readlink ckpt_dt/checkpoint_latest.h5) = checkpoint_000020.h5 \
-                 && test -z \"$(ls ckpt_dt | grep tmp)\"")
+                 && test -z \"$(ls ckpt_dt | grep tmp)\" \
+                 && ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --oversubscribe $<TARGET_FILE:vpsolve> \
+                 -options_file ${VP_CASES}/falling_sphere.opts -grid_n 16,16,24 -time_max_steps 30 -monitor_every 0 -output_dt 0 -output_dir ckpt_dt -checkpoint_dt 0.02 -checkpoint_keep 2 \
+                 -restart ckpt_dt/checkpoint_latest.h5 \
+                 && test ! -e ckpt_dt/checkpoint_000015.h5 && test ! -e ckpt_dt/checkpoint_000020.h5 \
+                 && test -f ckpt_dt/checkpoint_000025.h5 && test -f ckpt_dt/checkpoint_000030.h5")
 set_tests_properties(checkpoint_dt_keep PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
 
 # --- Robust runs: bad input and faults (docs/robustness.md lists each with its message) ----------

@@ -37,7 +37,8 @@ struct FluidState {
 
 class CheckpointWriter {
 public:
-  // Keeps the newest `keep` checkpoints this writer wrote, deletes older ones.
+  // Keeps the newest `keep` checkpoints of the directory (those of the run's earlier pieces count),
+  // deletes older ones.
   CheckpointWriter(MPI_Comm comm, std::string dir, int keep);
   // Collective. owned: this rank's particles with their springs.
   void write(const Grid& grid, const BoundaryConfig& bc, const RunState& run, const FluidState& fluid,
