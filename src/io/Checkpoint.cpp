@@ -3,10 +3,10 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/io/Hdf5.hpp"
+#include "vp/io/OutputDir.hpp"
 #include "vp/io/RunRecord.hpp"
 #include <algorithm>
 #include <cstdio>
-#include <dirent.h>
 #include <map>
 #include <tuple>
 #include <petscviewerhdf5.h>
@@ -127,15 +127,8 @@ CheckpointWriter::CheckpointWriter(MPI_Comm comm, std::string dir, int keep) : c
 {
   // A restart continues the count of the directory's checkpoints (a run in pieces keeps K in all).
   std::map<long, std::string> found;
-  if (DIR* d = ::opendir(dir_.c_str())) {
-    while (const dirent* e = ::readdir(d)) {
-      const std::string name = e->d_name;  // checkpoint_<step>.h5, not _latest.h5 or a .h5.tmp
-      if (name.size() <= 14 || name.compare(0, 11, "checkpoint_") != 0 || name.compare(name.size() - 3, 3, ".h5") != 0) continue;
-      const std::string digits = name.substr(11, name.size() - 14);
-      if (digits.find_first_not_of("0123456789") == std::string::npos) found[std::stol(digits)] = dir_ + "/" + name;
-    }
-    ::closedir(d);
-  }
+  for (const std::string& name : runOutputs(dir_))
+    if (name.rfind("checkpoint_", 0) == 0 && name != "checkpoint_latest.h5") found[std::stol(name.substr(11))] = dir_ + "/" + name;
   for (const auto& f : found) written_.push_back(f.second);
 }
 
