@@ -11,9 +11,10 @@
   calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres at five positions of
                their gap on the grid, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
+  confinement: the normal mode's resolved force in boxes of 4 (the study's) to 12 d
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
-usage: collisions.py [restitution|timestep|gondret|oblique|calibration|sensitivity|all] [--res N] [--reuse] [--fine]
+usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -407,8 +408,8 @@ RELAX = 3 * A * A / MU    # viscous relaxation time of a run: 3 a^2 / nu (rho = 
 SHRINK = 1.05             # normal and pair runs close the gap from SHRINK eps to eps over RELAX
 
 
-def calib_geometry(mode, eps):
-    """Options of the sphere(s) of infinite mass moving with a prescribed velocity (box 4 d, d = 1):
+def calib_geometry(mode, eps, box=4):
+    """Options of the sphere(s) of infinite mass moving with a prescribed velocity (box `box` d, d = 1):
     towards the floor or towards each other, closing the gap from SHRINK eps to eps over RELAX; along
     the floor at gap eps; spinning in place at gap eps. Stokes flow is linear: forces scale with U."""
     bc = ["-bc_xlo", "periodic", "-bc_xhi", "periodic", "-bc_ylo", "periodic", "-bc_yhi", "periodic"]
@@ -416,7 +417,7 @@ def calib_geometry(mode, eps):
     if mode == "pair":
         return bc + ["-bc_zlo", "periodic", "-bc_zhi", "periodic"], None, closing
     if mode == "normal":
-        return bc, ["-particle_position", "2,2,%r" % (A * (1 + SHRINK * eps)), "-particle_fixed",
+        return bc, ["-particle_position", "%r,%r,%r" % (box / 2, box / 2, A * (1 + SHRINK * eps)), "-particle_fixed",
                     "-particle_velocity", "0,0,%r" % -closing], closing
     one = ["-particle_position", "2,2,%r" % (A * (1 + eps)), "-particle_fixed"]
     if mode == "parallel":
@@ -449,17 +450,18 @@ def calib_value(mode, row, speed, resolved=True):
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0, box=4):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
     tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller).
-    `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre)."""
-    n = 4 * r
-    bc, one, speed = calib_geometry(mode, eps)
+    `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre).
+    `box`: the cubic box's side in d (the normal mode's resolved runs; 4 elsewhere)."""
+    n = box * r
+    bc, one, speed = calib_geometry(mode, eps, box)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
-    tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align)
+    tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align) + ("" if box == 4 else "_box%g" % box)
     out = "/tmp/vp_col_cal_" + tag
-    common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "4,4,4", "-fluid_rho", 1,
+    common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (box, box, box), "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
               "-contact_roughness", 1e-4] + bc
     if lub == "none":
@@ -554,6 +556,15 @@ def calibration():
     pair_position_figure(by_gap)
 
 
+def confinement():
+    """The normal mode's resolved force in cubic boxes of 4 (the study's) to 12 d: what the box adds."""
+    for r, boxes, gaps in ((8, [4, 6, 8, 12], [0.2, 0.5, 1.0]), (12, [4, 8], [0.05, 0.1, 0.2, 0.5, 1.0])):
+        for box in boxes:
+            errs = ["%+.1f" % (100 * (calib_run("normal", e, r, box=box) / brenner(e) - 1)) for e in gaps]
+            print("confinement: normal d/dx %2d box %2d d: error %% at eps %s: %s" %
+                  (r, box, "/".join("%g" % e for e in gaps), " / ".join(errs)), flush=True)
+
+
 def pair_position_figure(by_gap):
     """The pair's resolved force against where its gap lies on the grid, one line per gap and grid."""
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
@@ -570,6 +581,6 @@ def pair_position_figure(by_gap):
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "sensitivity"):
+    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity"):
         if what in (name, "all") and name in globals():
             globals()[name]()
