@@ -74,6 +74,29 @@ def impact(rows, a, axis="z", gap_in=0.1):
     return -crossing(down), (crossing(up) if up is not None else 0.0), True
 
 
+def departure(rows, a, mu, rho_p=STEEL):
+    """The rebound's way out, from the end of the first fluid step that ends out of contact to the gap
+    0.1 d: the sphere's speed at both, the resolved force's impulse over those steps (over the sphere's
+    mass, m/s) and the loss that rigid-sphere lubrication theory gives over the same gaps (Brenner's
+    resistance, quasi-steady)."""
+    d = 2 * a
+    g = [(r["z"] - a) / d for r in rows]
+    c0 = next(i for i in range(1, len(rows)) if g[i] <= 0)
+    c1 = next(i for i in range(c0, len(rows)) if g[i] > 0)
+    up = next((i for i in range(c1 + 1, len(rows)) if g[i - 1] < 0.1 <= g[i]), None)
+    if up is None:
+        return None
+    w = (0.1 - g[up - 1]) / (g[up] - g[up - 1])
+    u_out = rows[up - 1]["vz"] + w * (rows[up]["vz"] - rows[up - 1]["vz"])
+    m = rho_p * 4 / 3 * math.pi * a ** 3
+    impulse = sum(rows[i]["fz"] * (rows[i]["time"] - rows[i - 1]["time"]) for i in range(c1 + 1, up)) / m
+    impulse += w * rows[up]["fz"] * (rows[up]["time"] - rows[up - 1]["time"]) / m
+    n, lo, hi = 400, 2 * g[c1], 0.2  # eps = h / a
+    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
+    theory = 6 * math.pi * mu * a * a / m * sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
+    return g[c1], rows[c1]["vz"], u_out, impulse, theory
+
+
 SHORT = ["-contact_tc_steps", 0, "-contact_tc", 5e-5]  # a real impact's duration, resolved by the sub-steps
 
 
@@ -146,6 +169,11 @@ def restitution():
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
             print("restitution: -contact_hydro %-24s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
                   "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
+            out = departure(r[3], D3 / 2, study_mu(st)) if hydro == HYDRO and not extra else None
+            if out:
+                print("restitution: departure at nominal St %4g: %.3f m/s at gap %.3f d (the first step out of contact), "
+                      "%.3f at 0.1 d: loss %.3f (lubrication theory %.3f); resolved force's impulse %+.3f m/s" %
+                      (st, out[1], out[0], out[2], out[1] - out[2], out[4], out[3]), flush=True)
             if hydro == HYDRO and not extra and abs(e / E_DRY - math.exp(-35 / sti)) > 0.1 and 20 <= sti <= 1000:
                 failures.append(st)
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % name)
