@@ -32,9 +32,9 @@ STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
 U_RELEASE = 0.585  # m/s: the e(St) study's release speed (Gondret's St 152 impact speed)
 
 
-def study_mu(st, d=D3):
-    """Viscosity (Pa s) that gives the nominal St to the steel sphere of diameter d at U_RELEASE."""
-    return STEEL * U_RELEASE * d / (9 * st)
+def study_mu(st, d=D3, rho_p=STEEL):
+    """Viscosity (Pa s) that gives the nominal St to a sphere of diameter d, density rho_p at U_RELEASE."""
+    return rho_p * U_RELEASE * d / (9 * st)
 
 
 def run(out, *opts, case="restitution.opts", np=None):
@@ -100,12 +100,13 @@ def departure(rows, a, mu, rho_p=STEEL):
 SHORT = ["-contact_tc_steps", 0, "-contact_tc", 5e-5]  # a real impact's duration, resolved by the sub-steps
 
 
-def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
-    """Steel sphere of diameter d at nominal St (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d
-    box, released 3 d above the floor at 0.585 m/s. Returns (St at impact, e, u_in)."""
+def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_p=STEEL, rho_f=RHO_F):
+    """Sphere of diameter d (steel in the cases' liquid unless rho_p, rho_f say otherwise) at nominal St
+    (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d box, released 3 d above the floor at 0.585
+    m/s. Returns (St at impact, e, u_in, the tracked rows)."""
     r = r or res
     a, u = d / 2, U_RELEASE
-    mu = study_mu(st, d)
+    mu = study_mu(st, d, rho_p)
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
@@ -113,11 +114,12 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5):
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
                "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
+               "-particle_density", rho_p, "-fluid_rho", rho_f,
                "-contact_hydro", hydro, "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *extra)
     u_in, u_out, touched = impact(rows, a)
     if u_in is None or not touched:
         return None
-    return STEEL * u_in * d / (9 * mu), u_out / u_in, u_in, rows
+    return rho_p * u_in * d / (9 * mu), u_out / u_in, u_in, rows
 
 
 ST_LIST = [5, 20, 30, 40, 70, 100, 152, 300, 500, 1000]

@@ -36,6 +36,10 @@ ContactConfig readContactOptions()
   k.hydro = static_cast<ContactHydro>(o.choice("-contact_hydro", {"keep", "exclude", "limit"}, static_cast<int>(k.hydro),
                                                "Resolved hydrodynamic force during contact: keep, exclude (buoyancy stays), "
                                                "limit (excluded beyond the buoyant-weight overlap)"));
+  k.departureCells = o.real("-contact_hydro_departure", k.departureCells,
+                            "With -contact_hydro limit: a sphere leaving a wall after an impact keeps its resolved force "
+                            "excluded and gets the lubrication correction from this gap, in grid cells, until it is "
+                            "that far (0: off; docs/collisions.md)");
   return k;
 }
 
@@ -55,6 +59,9 @@ void ContactConfig::validate() const
   if (!(gtRatio >= 0 && gtRatio <= 1)) failOption("-contact_damping_t_ratio", "must be in [0, 1]", gtRatio);
   if (!(roughness >= 0 && roughness < 0.5)) failOption("-contact_roughness", "must be in [0, 0.5)", roughness);
   if (!(rollingFriction >= 0 && rollingFriction <= 1)) failOption("-contact_rolling_friction", "must be in [0, 1]", rollingFriction);
+  if (!(departureCells >= 0 && departureCells <= 4)) failOption("-contact_hydro_departure", "must be in [0, 4] grid cells", departureCells);
+  if (departureCells > 0 && hydro != ContactHydro::Limit)
+    failOption("-contact_hydro_departure", std::string("needs -contact_hydro limit (given: ") + contactHydroName(hydro) + ")");
 }
 
 } // namespace vp

@@ -56,6 +56,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
   const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
   lub_.complete(hmin, hydro_, 2 * pc_.contact.roughness, rmax_);
+  if (hydro_ && resolvedInContact_ == ContactHydro::Limit) departureGap_ = pc_.contact.departureCells * hmin;
   if (lub_.model != LubModel::None) {
     lubGap_ = lub_.activationGap(rmax_);
     lubStableSubstep_ = 0.5 / lubricationRate(all);
@@ -128,8 +129,13 @@ void DemSolver::computeForces(double dt)
   const double rough = law_.roughness();
   // Ghost entries collect partial sums too (never used): no branch in the scatter.
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
+  // A particle whose resolved force an impact switched off may be leaving a wall: a candidate for
+  // the departure (-contact_hydro_departure), confirmed or dropped by the wall loop below.
   if (resolvedInContact_ != ContactHydro::Keep)
-    for (std::size_t i = 0; i < s.size(); ++i) s.flags[i] &= ~kResolvedForceOff;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const bool candidate = departureGap_ > 0 && (s.flags[i] & (kResolvedForceOff | kDeparting));
+      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting)) | (candidate ? kDeparting : 0);
+    }
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
   for (std::size_t k = 0; k < P.size(); ++k) {
@@ -199,8 +205,10 @@ void DemSolver::computeForces(double dt)
     Vec3 F = s.force[i], T = s.torque[i];
     const double a = s.radius[i], reach = a * (1 + 2 * rough);
     const double lubReach = lubricated ? a + lub_.activationGap(a) : 0;
+    const bool candidate = s.flags[i] & kDeparting;
+    bool departing = false;
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    if (s.wallTouch[i] || nearWall(s.x[i], std::max(reach, lubReach))) {
+    if (s.wallTouch[i] || nearWall(s.x[i], std::max({reach, lubReach, candidate ? a + departureGap_ : 0.0}))) {
       std::uint8_t touch = 0;
       for (int f : activeWalls_) {
         const Wall& wall = walls_[f];
@@ -226,7 +234,12 @@ void DemSolver::computeForces(double dt)
           ++wallContacts;
           if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
         }
-        if (overlap <= 0 && dist < lubReach) {  // hand-off: no lubrication in contact
+        // Moving away from the wall after an impact, still in contact (below the buoyant-weight
+        // overlap) or within the departure gap: the mask's sub-cell gap is not the squeeze
+        // (docs/collisions.md), so the correction stands for the whole film there.
+        const bool leaving = candidate && dot(s.v[i] - wall.velocity, n) > 0 && dist - a < departureGap_;
+        departing = departing || leaving;
+        if (overlap <= 0 && (dist < lubReach || (leaving && lubricated))) {  // hand-off: no lubrication in contact
           PairState st;
           st.normal = -n;  // from the centre towards the wall
           st.gap = dist - a;
@@ -237,7 +250,9 @@ void DemSolver::computeForces(double dt)
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
           st.slipWall = wall.slip;
-          const PairForce l = lubricationForce(lub_, st, 2 * rough * a);
+          LubricationParams film = lub_;
+          if (leaving) film.activation = departureGap_ / a;
+          const PairForce l = lubricationForce(film, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           F += l.forceI;
           T += l.torqueI;
@@ -245,6 +260,8 @@ void DemSolver::computeForces(double dt)
       }
       s.wallTouch[i] = touch;
     }
+    // A new impact, or no wall left to leave: the departure ends.
+    if (!departing || (s.flags[i] & kResolvedForceOff)) s.flags[i] &= ~kDeparting;
     s.force[i] = F + s.mass[i] * gravity_;
     s.torque[i] = T;
   }
@@ -412,7 +429,7 @@ void DemSolver::checkLubricationSeen(double dtp)
 void DemSolver::relax(std::size_t i, double half, Vec3& v, Vec3& w) const
 {
   const ParticleStore& s = store_;
-  if (drag_ == 0 || (s.flags[i] & kResolvedForceOff)) return;
+  if (drag_ == 0 || resolvedOff(i)) return;
   const double a = s.radius[i];
   const double cv = half * s.invMass[i] * drag_ * 6 * M_PI * mu_ * a;
   const double cw = half * s.invInertia[i] * drag_ * 8 * M_PI * mu_ * a * a * a;

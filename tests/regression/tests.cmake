@@ -115,6 +115,10 @@ vp_bad_input(lub_saturation_above_activation 1 "option -lub_saturation: must be 
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -lub_model llcm -lub_activation 0.1 -lub_saturation 0.2)
 vp_bad_input(contact_hydro_unknown 1 "option -contact_hydro: unknown value 'off' \\(valid: keep, exclude, limit\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro off)
+vp_bad_input(contact_hydro_departure_range 1 "option -contact_hydro_departure: must be in \\[0, 4\\] grid cells, got 5"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro_departure 5)
+vp_bad_input(contact_hydro_departure_needs_limit 1 "option -contact_hydro_departure: needs -contact_hydro limit \\(given: keep\\)"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro keep -contact_hydro_departure 1)
 vp_bad_input(contact_restitution_t 1 "option -contact_restitution_t: must be in \\(0, 1\\] \\(0: not set\\), got 2"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_restitution_t 2)
 vp_bad_input(lub_activation_twice 1 "option -lub_activation_cells: give either -lub_activation or -lub_activation_cells"
@@ -207,6 +211,10 @@ set_tests_properties(calibration_pair_position_d8 PROPERTIES ENVIRONMENT "${VP_M
 # A rebound converges in the fluid step (docs/collisions.md): impact St 27 at CFL 0.5 and 0.125.
 add_test(NAME rebound_converges_in_step COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_rebound_step.py)
 set_tests_properties(rebound_converges_in_step PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+# Leaving a wall after an impact (-contact_hydro_departure, docs/collisions.md): the way out follows
+# lubrication theory; a glass sphere in water rebounds as the experiments' curve has it.
+add_test(NAME departure_after_impact COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_departure.py)
+set_tests_properties(departure_after_impact PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
 
 # --- Checkpoint/restart -------------------------------------------------------------------------
 set(VP_CHECK_RESTART /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_restart.py)

@@ -82,9 +82,10 @@ private:
   Vec3 resolvedForce(std::size_t i) const
   {
     const ParticleStore& s = store_;
-    return (s.flags[i] & kResolvedForceOff) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
+    return resolvedOff(i) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
   }
-  Vec3 resolvedTorque(std::size_t i) const { return (store_.flags[i] & kResolvedForceOff) ? Vec3{} : store_.thyd[i]; }
+  Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
+  bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting); }
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
@@ -107,6 +108,7 @@ private:
   double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
   double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
   double lubGap_ = 0;      // largest activation gap [m]
+  double departureGap_ = 0;  // -contact_hydro_departure in metres (0: off)
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
   double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]

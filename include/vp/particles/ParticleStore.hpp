@@ -10,7 +10,9 @@ namespace vp {
 // motion; held in place when they are zero).
 // kResolvedForceOff: in a contact whose resolved hydrodynamic force is excluded (-contact_hydro),
 // set by the DEM's force loop for the next kicks.
-enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2 };
+// kDeparting: leaving a wall after such a contact, closer than -contact_hydro_departure: the resolved
+// force stays excluded and the lubrication correction acts from that gap (set by the force loop).
+enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2, kDeparting = 4 };
 
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
