@@ -15,10 +15,12 @@
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
 usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|all] [--res N] [--reuse] [--fine]
-                     [--cases-only] [--roughness] [--short]
+                     [--cases-only] [--roughness] [--departure] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
+  --departure: restitution with the cases' set-up, the same with -contact_hydro_departure 1, and a glass
+               sphere in water (St 100-1000) both ways
   --short: timestep also with the short contact
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
@@ -81,10 +83,10 @@ def departure(rows, a, mu, rho_p=STEEL):
     resistance, quasi-steady)."""
     d = 2 * a
     g = [(r["z"] - a) / d for r in rows]
-    c0 = next(i for i in range(1, len(rows)) if g[i] <= 0)
-    c1 = next(i for i in range(c0, len(rows)) if g[i] > 0)
-    up = next((i for i in range(c1 + 1, len(rows)) if g[i - 1] < 0.1 <= g[i]), None)
-    if up is None:
+    c0 = next((i for i in range(1, len(rows)) if g[i] <= 0), None)
+    c1 = None if c0 is None else next((i for i in range(c0, len(rows)) if g[i] > 0), None)
+    up = None if c1 is None else next((i for i in range(c1 + 1, len(rows)) if g[i - 1] < 0.1 <= g[i]), None)
+    if up is None:  # no contact, or no rebound to 0.1 d
         return None
     w = (0.1 - g[up - 1]) / (g[up] - g[up - 1])
     u_out = rows[up - 1]["vz"] + w * (rows[up]["vz"] - rows[up - 1]["vz"])
@@ -110,7 +112,10 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
-    out = "/tmp/vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, "_plain" if PLAIN[0] in extra else "", r, d))
+    others = [str(o) for o in extra if o not in PLAIN]  # the run's options beyond the plain projection
+    tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
+    tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
+    out = "/tmp/vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, tag, r, d))
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
                "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
@@ -132,6 +137,9 @@ def study_cfl(st):
     return 0.25 if st >= 1000 else 0.5
 
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
+DEPARTURE = ["-contact_hydro_departure", 1]  # docs/collisions.md, "The departure after an impact"
+GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
+GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
 # cases keep the seed's 2e-4 d (docs/collisions.md).
 ROUGH_GONDRET = ["-contact_roughness", 5e-5]
@@ -152,17 +160,22 @@ def restitution():
     ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
                 label="lubrication theory, rigid sphere (L = %.2f)" % L)
     failures = []
-    sets = ((HYDRO, [], "s", ST_LIST), ("keep", [], "o", [40, 152, 500]), (HYDRO, PLAIN, "^", [40, 152, 500]))
+    steel = (STEEL, RHO_F)
+    sets = ((HYDRO, [], "s", ST_LIST, steel), ("keep", [], "o", [40, 152, 500], steel), (HYDRO, PLAIN, "^", [40, 152, 500], steel))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
         sets = sets[:1]
     if "--roughness" in sys.argv:  # the cases' set-up and the same with Gondret's reported roughness
-        sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST))
-    for hydro, extra, mark, st_list in sets:
-        name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else "")
+        sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST, steel))
+    if "--departure" in sys.argv:  # the cases' set-up with and without the departure, steel and glass in water
+        sets = (sets[0], (HYDRO, DEPARTURE, "v", ST_LIST, steel), (HYDRO, [], "<", GLASS_ST, (GLASS, WATER)),
+                (HYDRO, DEPARTURE, ">", GLASS_ST, (GLASS, WATER)))
+    for hydro, extra, mark, st_list, (rho_p, rho_f) in sets:
+        name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
+                        ", departure 1 cell" if extra == DEPARTURE else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
-            r = restitution_run(st, hydro, extra=extra, label=label, cfl=study_cfl(st))
+            r = restitution_run(st, hydro, extra=extra, label=label, cfl=study_cfl(st), rho_p=rho_p, rho_f=rho_f)
             if r is None:
                 print("restitution: St %g %s: no contact within the run (a creeping approach: no rebound)" % (st, name), flush=True)
                 continue
@@ -171,12 +184,12 @@ def restitution():
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
             print("restitution: -contact_hydro %-24s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
                   "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
-            out = departure(r[3], D3 / 2, study_mu(st)) if hydro == HYDRO and not extra else None
+            out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], DEPARTURE) else None
             if out:
                 print("restitution: departure at nominal St %4g: %.3f m/s at gap %.3f d (the first step out of contact), "
                       "%.3f at 0.1 d: loss %.3f (lubrication theory %.3f); resolved force's impulse %+.3f m/s" %
                       (st, out[1], out[0], out[2], out[1] - out[2], out[4], out[3]), flush=True)
-            if hydro == HYDRO and not extra and abs(e / E_DRY - math.exp(-35 / sti)) > 0.1 and 20 <= sti <= 1000:
+            if hydro == HYDRO and not extra and rho_p == STEEL and abs(e / E_DRY - math.exp(-35 / sti)) > 0.1 and 20 <= sti <= 1000:
                 failures.append(st)
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % name)
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
@@ -187,7 +200,7 @@ def restitution():
     ax.legend(fontsize=8)
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "restitution_stokes.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "restitution_departure.png" if "--departure" in sys.argv else "restitution_stokes.png"), dpi=120)
 
 
 def timestep():

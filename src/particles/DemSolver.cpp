@@ -68,6 +68,10 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   for (const ParticleRecord& r : all)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
+  // A checkpoint written with other -contact_hydro options: their flags do not apply here.
+  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact)
+                             : departureGap_ == 0                    ? (kDeparting | kWallImpact) : 0;
+  for (std::size_t i = 0; i < store_.nOwned; ++i) store_.flags[i] &= ~stale;
   rebuild();
   // Initial forces (zero step: springs keep their state). A restart has those of the last
   // sub-step, computed from the predicted velocities: recomputing them would change the run.
@@ -129,12 +133,12 @@ void DemSolver::computeForces(double dt)
   const double rough = law_.roughness();
   // Ghost entries collect partial sums too (never used): no branch in the scatter.
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
-  // A particle whose resolved force an impact switched off may be leaving a wall: a candidate for
-  // the departure (-contact_hydro_departure), confirmed or dropped by the wall loop below.
+  // A particle that was in a wall impact or leaving one may be leaving a wall: a candidate for the
+  // departure (-contact_hydro_departure), confirmed or dropped by the wall loop below.
   if (resolvedInContact_ != ContactHydro::Keep)
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const bool candidate = departureGap_ > 0 && (s.flags[i] & (kResolvedForceOff | kDeparting));
-      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting)) | (candidate ? kDeparting : 0);
+      const bool candidate = departureGap_ > 0 && (s.flags[i] & (kWallImpact | kDeparting));
+      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact)) | (candidate ? kDeparting : 0);
     }
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
@@ -233,6 +237,7 @@ void DemSolver::computeForces(double dt)
           T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, 0, s.invInertia[i], dt);
           ++wallContacts;
           if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
+          if (departureGap_ > 0 && excludesResolvedForce(i, overlap / 2, wallCoef.kn)) s.flags[i] |= kWallImpact;
         }
         // Moving away from the wall after an impact, still in contact (below the buoyant-weight
         // overlap) or within the departure gap: the mask's sub-cell gap is not the squeeze
@@ -251,7 +256,7 @@ void DemSolver::computeForces(double dt)
           st.viscosity = mu_;
           st.slipWall = wall.slip;
           LubricationParams film = lub_;
-          if (leaving) film.activation = departureGap_ / a;
+          if (leaving) film.activation = std::max(departureGap_, lub_.activationGap(a)) / a;
           const PairForce l = lubricationForce(film, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           F += l.forceI;
@@ -261,7 +266,7 @@ void DemSolver::computeForces(double dt)
       s.wallTouch[i] = touch;
     }
     // A new impact, or no wall left to leave: the departure ends.
-    if (!departing || (s.flags[i] & kResolvedForceOff)) s.flags[i] &= ~kDeparting;
+    if (!departing || (s.flags[i] & kWallImpact)) s.flags[i] &= ~kDeparting;
     s.force[i] = F + s.mass[i] * gravity_;
     s.torque[i] = T;
   }

@@ -135,6 +135,8 @@ void ParticleConfig::validate() const
   }
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) failOption("-particles_max_overlap", "must be in [0, 0.5), got " + formatNumber(maxOverlap));
   contact.validate();
+  if (contact.departureCells > 0 && lubrication.model == LubModel::None)
+    failOption("-contact_hydro_departure", "needs -lub_model blcm or llcm (the correction stands for the film there)");
   if (substeps < 1) failOption("-dem_substeps", "must be >= 1, got " + std::to_string(substeps));
   if (!(skin > 0 && skin <= 1)) failOption("-dem_skin", "must be in (0, 1], got " + formatNumber(skin));
 }

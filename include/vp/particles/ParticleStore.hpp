@@ -10,9 +10,11 @@ namespace vp {
 // motion; held in place when they are zero).
 // kResolvedForceOff: in a contact whose resolved hydrodynamic force is excluded (-contact_hydro),
 // set by the DEM's force loop for the next kicks.
-// kDeparting: leaving a wall after such a contact, closer than -contact_hydro_departure: the resolved
-// force stays excluded and the lubrication correction acts from that gap (set by the force loop).
-enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2, kDeparting = 4 };
+// kWallImpact: that contact is a wall's, pressed beyond twice the buoyant-weight overlap (an impact,
+// not a sphere resting on it). kDeparting: leaving a wall after a wall impact, closer than
+// -contact_hydro_departure: the resolved force stays excluded and the lubrication correction acts
+// from that gap (set by the force loop).
+enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2, kDeparting = 4, kWallImpact = 8 };
 
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
