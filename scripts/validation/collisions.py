@@ -93,10 +93,16 @@ def departure(rows, a, mu, rho_p=STEEL):
     m = rho_p * 4 / 3 * math.pi * a ** 3
     impulse = sum(rows[i]["fz"] * (rows[i]["time"] - rows[i - 1]["time"]) for i in range(c1 + 1, up)) / m
     impulse += w * rows[up]["fz"] * (rows[up]["time"] - rows[up - 1]["time"]) / m
-    n, lo, hi = 400, 2 * g[c1], 0.2  # eps = h / a
-    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
-    theory = 6 * math.pi * mu * a * a / m * sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
+    theory = 6 * math.pi * mu * a * a / m * brenner_integral(2 * g[c1], 0.2)
     return g[c1], rows[c1]["vz"], u_out, impulse, theory
+
+
+def brenner_integral(lo, hi, n=2000):
+    """The integral of Brenner's resistance over the gap eps = h/a from lo to hi: a rigid sphere's
+    velocity loss over those gaps is 6 pi mu a^2 / m times it. Midpoint rule in ln(eps): the integral
+    of lambda d eps is that of lambda eps d ln(eps)."""
+    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
+    return sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
 
 
 SHORT = ["-contact_tc_steps", 0, "-contact_tc", 5e-5]  # a real impact's duration, resolved by the sub-steps
@@ -153,10 +159,7 @@ def restitution():
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
     # Rigid-sphere lubrication theory: the same velocity loss u_in L / St on the way in and out, L the
     # integral of Brenner's resistance from the gap where u_in is taken (0.1 d) to the roughness (2e-4 d).
-    # Midpoint rule in ln(eps): the integral of lambda d eps is that of lambda eps d ln(eps).
-    n, lo, hi = 2000, 4e-4, 0.2
-    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
-    L = sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
+    L = brenner_integral(4e-4, 0.2)
     ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
                 label="lubrication theory, rigid sphere (L = %.2f)" % L)
     failures = []
