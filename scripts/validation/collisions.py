@@ -52,6 +52,12 @@ def run(out, *opts, case="restitution.opts", np=None):
     return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(done))]
 
 
+def crossing(g, v, i, level):
+    """The fraction of row i-1 -> i at which the gap series g passes `level`, and v interpolated there."""
+    w = (g[i - 1] - level) / (g[i - 1] - g[i])
+    return w, v[i - 1] + w * (v[i] - v[i - 1])
+
+
 def impact(rows, a, axis="z", gap_in=0.1):
     """Impact on the floor z = 0, measured symmetrically outside the lubrication film: the approach
     speed as the gap passes gap_in d on the way down, the rebound speed as it passes gap_in d on the
@@ -61,19 +67,15 @@ def impact(rows, a, axis="z", gap_in=0.1):
     d = 2 * a
     g = [(r[axis] - a) / d for r in rows]
     v = [r["v" + axis] for r in rows]
-
-    def crossing(i):  # speed interpolated at gap_in between rows i-1 and i
-        w = (g[i - 1] - gap_in) / (g[i - 1] - g[i])
-        return v[i - 1] + w * (v[i] - v[i - 1])
-
+    speed = lambda i: crossing(g, v, i, gap_in)[1]
     down = next((i for i in range(1, len(rows)) if g[i - 1] > gap_in >= g[i]), None)
     # The first contact: a row in contact or, for a contact shorter than a fluid step, the first row
     # moving away from the wall after the approach.
     first = None if down is None else next((i for i in range(down, len(rows)) if g[i] <= 2e-4 or v[i] >= 0), None)
     if down is None or first is None:
-        return (None if down is None else -crossing(down)), 0.0, first is not None
+        return (None if down is None else -speed(down)), 0.0, first is not None
     up = next((i for i in range(first + 1, len(rows)) if g[i - 1] < gap_in <= g[i]), None)
-    return -crossing(down), (crossing(up) if up is not None else 0.0), True
+    return -speed(down), (speed(up) if up is not None else 0.0), True
 
 
 def departure(rows, a, mu, rho_p=STEEL):
@@ -88,8 +90,7 @@ def departure(rows, a, mu, rho_p=STEEL):
     up = None if c1 is None else next((i for i in range(c1 + 1, len(rows)) if g[i - 1] < 0.1 <= g[i]), None)
     if up is None:  # no contact, or no rebound to 0.1 d
         return None
-    w = (0.1 - g[up - 1]) / (g[up] - g[up - 1])
-    u_out = rows[up - 1]["vz"] + w * (rows[up]["vz"] - rows[up - 1]["vz"])
+    w, u_out = crossing(g, [r["vz"] for r in rows], up, 0.1)
     m = rho_p * 4 / 3 * math.pi * a ** 3
     impulse = sum(rows[i]["fz"] * (rows[i]["time"] - rows[i - 1]["time"]) for i in range(c1 + 1, up)) / m
     impulse += w * rows[up]["fz"] * (rows[up]["time"] - rows[up - 1]["time"]) / m
