@@ -20,7 +20,8 @@ usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confineme
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
   --departure: restitution with the cases' set-up, the same with -contact_hydro_departure 1, and a glass
-               sphere in water (St 100-1000) both ways
+               sphere in water (St 100-1000) both ways; the other wet studies with the option (their
+               runs and figures named ..._departure)
   --short: timestep also with the short contact
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
@@ -145,6 +146,9 @@ def study_cfl(st):
 
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
 DEPARTURE = ["-contact_hydro_departure", 1]  # docs/collisions.md, "The departure after an impact"
+# --departure: the wet studies other than restitution run with the option (restitution: both ways).
+WITH = DEPARTURE if "--departure" in sys.argv else []
+SUFFIX = "_departure" if WITH else ""
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
@@ -218,7 +222,7 @@ def timestep():
         for name, opts, mark in contacts:
             pts = []
             for cfl in cfls:
-                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts, label="dt_%s_st%d_cfl%g" % (name, st, cfl))
+                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts + WITH, label="dt_%s_st%d_cfl%g%s" % (name, st, cfl, SUFFIX))
                 print("timestep: %-9s contact, nominal St %3d, CFL %6g: impact St %.1f, e/e_dry %.3f (exp(-35/St) %.3f)" %
                       (name, st, cfl, out[0], out[1] / E_DRY, math.exp(-35 / out[0])) if out else
                       "timestep: %s contact, St %d, CFL %g: no contact" % (name, st, cfl), flush=True)
@@ -235,7 +239,7 @@ def timestep():
     ax.set_ylim(0, 1)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "restitution_timestep.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "restitution_timestep%s.png" % SUFFIX), dpi=120)
 
 
 # --- Gondret's set-ups: trajectories ------------------------------------------------------------------
@@ -270,7 +274,7 @@ def apexes(rows, a):
 def gondret(hydro=HYDRO):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, st in zip(axes, (27, 152)):
-        d, rows = gondret_run(st, hydro)
+        d, rows = gondret_run(st, hydro, extra=WITH)
         tref = math.sqrt(d / 9.81)
         u_in, u_out, _ = impact(rows, d / 2)
         first = next(i for i, x in enumerate(rows) if (x["z"] - d / 2) / d <= 2e-4)
@@ -287,7 +291,7 @@ def gondret(hydro=HYDRO):
         ax.set_ylabel("gap / d")
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "gondret_trajectories.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "gondret_trajectories%s.png" % SUFFIX), dpi=120)
 
 
 # --- Oblique impacts ------------------------------------------------------------------------------------
@@ -337,12 +341,12 @@ def oblique_wet(material):
     out = []
     r = min(res, 12)
     for pin in PSI_IN_WET:
-        o = "/tmp/vp_col_wet_%s_psi%g_r%d" % (material, pin, r)
+        o = "/tmp/vp_col_wet_%s_psi%g_r%d%s" % (material, pin, r, SUFFIX)
         rows = run(o, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 4 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 4 * d),
                    "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 1.5 * d), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
                    "-particle_density", rho_p, "-fluid_rho", rho, "-fluid_mu", mu, "-contact_friction", mu_c,
                    "-time_dt", 0.5 * d / r / (vn * math.hypot(1, pin)), "-time_final", 1.6 * d / vn, "-dem_substeps", 200,
-                   "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, case="oblique_collision.opts")  # the stretched contact's overlap; CFL 1.12 at impact (weighted, steel, Psi_in 0.1)
+                   "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *WITH, case="oblique_collision.opts")  # the stretched contact's overlap; CFL 1.12 at impact (weighted, steel, Psi_in 0.1)
         out.append(psi(rows, d / 2))
     return out, mu_c, rho_p * vn * d / (9 * mu), r
 
@@ -377,7 +381,7 @@ def oblique():
         ax.set_xlabel("Psi_in")
         ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "oblique_impacts.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "oblique_impacts%s.png" % SUFFIX), dpi=120)
 
 
 # --- Sensitivity at St 27 and 152 ------------------------------------------------------------------------
@@ -400,8 +404,9 @@ def sensitivity():
         stiff = [("lambda x%g" % f, ["-penalization_lambda", f * lam], 12) for f in (0.5, 2)]
         base = None
         for name, opts, r in variants + stiff:
-            label = None if name in ("reference", "d/dx 8", "d/dx 16") else "sens_st%d_%s" % (st, name.replace(" ", "_").replace("/", ""))
-            out = restitution_run(st, HYDRO, r=r, extra=opts, label=label)
+            label = None if name in ("reference", "d/dx 8", "d/dx 16") else \
+                "sens_st%d_%s%s" % (st, name.replace(" ", "_").replace("/", ""), SUFFIX)
+            out = restitution_run(st, HYDRO, r=r, extra=opts + WITH, label=label)
             if out is None:
                 print("sensitivity: nominal St %d, %s: no impact" % (st, name), flush=True)
                 continue

@@ -1,0 +1,147 @@
+// -contact_hydro_departure (docs/collisions.md, "The departure after an impact"): which wall contacts
+// start a departure, where it ends, and the correction it applies on the way out. The DEM of a
+// coupled run without its fluid: the resolved force is held at the buoyancy of a still liquid.
+#include "../support/DemFixtures.hpp"
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace vp;
+using namespace vp::test;
+
+namespace {
+
+constexpr double kA = 1.5e-3, kSteel = 7800, kRho = 935, kMu = 0.05, kG = 9.81;
+constexpr double kRough = 2e-4;  // of the diameter: contact from the gap 2 kRough a
+constexpr int kCells = 72;       // d/dx 12: a cell is 0.25 mm
+
+Config liquidBox()
+{
+  Config c = boxConfig({0, 0, 0}, {0.018, 0.018, 0.018}, {kCells, kCells, kCells});
+  c.fluid.off = false;  // a coupled run: -contact_hydro applies
+  c.fluid.rho = kRho;
+  c.fluid.mu = kMu;
+  c.gravity = {0, 0, -kG};
+  return c;
+}
+
+ParticleConfig departureConfig(double cells)
+{
+  ParticleConfig pc = lubricatedConfig(1e-4, 0.97, kRough, LubModel::Llcm, 0);  // activation: 0.18 cells
+  pc.contact.departureCells = cells;
+  pc.substeps = 200;
+  return pc;
+}
+
+struct Sample {
+  double gap, vz;
+  std::uint8_t flags;
+};
+
+// The sphere on the floor's axis from gap0 at speed vz0; the samples after each fluid step of dt.
+std::vector<Sample> fall(double cells, double gap0, double vz0, int steps, double dt = 1e-5)
+{
+  const Config c = liquidBox();
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  DemSolver dem(grid, c, departureConfig(cells), {sphere(1, {0.009, 0.009, kA + gap0}, kA, kSteel, {0, 0, vz0})});
+  ParticleStore& s = dem.particles();
+  std::vector<Sample> out;
+  for (int k = 0; k < steps; ++k) {
+    s.fhyd[0] = (kRho / kSteel * s.mass[0] * kG) * Vec3{0, 0, 1};
+    dem.advance(k * dt, dt);
+    out.push_back({s.x[0].z - kA, s.v[0].z, s.flags[0]});
+  }
+  return out;
+}
+
+// The upward speed as the gap first passes `level` on the way up.
+double upwardSpeedAt(const std::vector<Sample>& run, double level)
+{
+  for (size_t k = 1; k < run.size(); ++k)
+    if (run[k].vz > 0 && run[k - 1].gap < level && run[k].gap >= level) {
+      const double w = (level - run[k - 1].gap) / (run[k].gap - run[k - 1].gap);
+      return run[k - 1].vz + w * (run[k].vz - run[k - 1].vz);
+    }
+  return NAN;
+}
+
+// The LLCM squeeze resistance (force per approach speed) of the sphere at wall gap h.
+double resistance(double h)
+{
+  PairState st;
+  st.normal = {0, 0, -1};
+  st.gap = h;
+  st.radiusI = kA;
+  st.radiusJ = kWallRadius;
+  st.velocityI = {0, 0, -1};
+  st.viscosity = kMu;
+  return std::fabs(lubricationModelForce(LubModel::Llcm, 1.0, st).forceI.z);
+}
+
+// The integral of R(h) - R(hAct) from the contact gap to hAct (midpoint rule in ln h).
+double correctionIntegral(double hContact, double hAct)
+{
+  const int n = 4000;
+  const double ratio = std::log(hAct / hContact), rAct = resistance(hAct);
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double h = hContact * std::exp((k + 0.5) / n * ratio);
+    sum += (resistance(h) - rAct) * h;
+  }
+  return sum * ratio / n;
+}
+
+} // namespace
+
+TEST_CASE("Departure: a wall impact starts it, it ends at the departure gap, the whole correction acts below it", "[dem][lub]")
+{
+  const double cell = 0.018 / kCells, C = 1.0;
+  const std::vector<Sample> with = fall(C, 0.3e-3, -1.0, 150), without = fall(0, 0.3e-3, -1.0, 150);
+
+  bool impact = false, inDeparture = false;
+  for (const Sample& x : with) {
+    impact = impact || (x.flags & kWallImpact);
+    const bool departing = x.flags & kDeparting;
+    INFO("gap " << x.gap / cell << " cells, vz " << x.vz << " m/s, flags " << int(x.flags));
+    if (x.gap > 1.05 * C * cell) CHECK_FALSE(departing);  // ends at C cells
+    if (x.vz < 0) CHECK_FALSE(departing);                 // only on the way out
+    if (impact && x.vz > 0 && x.gap > 0 && x.gap < 0.95 * C * cell) CHECK(departing);
+    inDeparture = inDeparture || departing;
+  }
+  CHECK(impact);
+  CHECK(inDeparture);
+  for (const Sample& x : without) CHECK_FALSE(x.flags & (kDeparting | kWallImpact));
+
+  // Both runs are the same up to the end of the contact; on the way out the departure applies the
+  // correction from C cells instead of the activation gap, so above C cells the sphere is slower
+  // by (1/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh] (dv = -(R/m) dh at any speed).
+  const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = 2 * kRough * kA;
+  const double expected = (correctionIntegral(hc, C * cell) - correctionIntegral(hc, 0.18 * cell)) / m;
+  const double level = 1.2 * C * cell, got = upwardSpeedAt(without, level) - upwardSpeedAt(with, level);
+  INFO("speed at " << level / cell << " cells: without " << upwardSpeedAt(without, level) << ", with "
+                   << upwardSpeedAt(with, level) << " m/s; difference " << got << " against " << expected);
+  REQUIRE(expected > 0.01);
+  CHECK(std::fabs(got / expected - 1) < 0.02);
+}
+
+TEST_CASE("Departure: a sphere settling onto the wall and lifted from it never starts one", "[dem][lub]")
+{
+  // Released touching the wall at rest: the undamped spring would reach twice the buoyant-weight
+  // overlap, the damped one (restitution 0.97) stays below it, so the contact is no impact.
+  const double hc = 2 * kRough * kA;
+  const Config c = liquidBox();
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  DemSolver dem(grid, c, departureConfig(1.0), {sphere(1, {0.009, 0.009, kA + 0.999 * hc}, kA, kSteel)});
+  ParticleStore& s = dem.particles();
+  const double dt = 1e-5;
+  bool touched = false;
+  for (int k = 0; k < 500; ++k) {
+    if (k == 400) s.v[0].z = 0.05;  // lifted off at rest
+    s.fhyd[0] = (kRho / kSteel * s.mass[0] * kG) * Vec3{0, 0, 1};
+    dem.advance(k * dt, dt);
+    touched = touched || s.x[0].z - kA < hc;
+    INFO("step " << k << ": gap " << s.x[0].z - kA << " m, vz " << s.v[0].z);
+    CHECK_FALSE(s.flags[0] & (kWallImpact | kDeparting));
+  }
+  CHECK(touched);
+  CHECK(s.x[0].z - kA > hc);  // lifted off
+}
