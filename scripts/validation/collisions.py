@@ -15,13 +15,13 @@
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
 usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|all] [--res N] [--reuse] [--fine]
-                     [--cases-only] [--roughness] [--departure] [--short]
+                     [--cases-only] [--roughness] [--no-departure] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
-  --departure: restitution with the cases' set-up, the same with -contact_hydro_departure 1, and a glass
-               sphere in water (St 100-1000) both ways; the other wet studies with the option (their
-               runs and figures named ..._departure)
+  --no-departure: restitution with the cases' set-up (-contact_hydro_departure 1), the same without it
+               (-contact_hydro_departure 0), and a glass sphere in water (St 100-1000) both ways; the other
+               wet studies without it (their runs and figures named ..._nodeparture)
   --short: timestep also with the short contact
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
@@ -145,10 +145,11 @@ def study_cfl(st):
     return 0.25 if st >= 1000 else 0.5
 
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
-DEPARTURE = ["-contact_hydro_departure", 1]  # docs/collisions.md, "The departure after an impact"
-# --departure: the wet studies other than restitution run with the option (restitution: both ways).
-WITH = DEPARTURE if "--departure" in sys.argv else []
-SUFFIX = "_departure" if WITH else ""
+# The cases leave a wall after an impact with the departure (docs/collisions.md, "The departure after an
+# impact"); --no-departure measures the studies without it (restitution: both ways).
+NO_DEPARTURE = ["-contact_hydro_departure", 0]
+WITHOUT = NO_DEPARTURE if "--no-departure" in sys.argv else []
+SUFFIX = "_nodeparture" if WITHOUT else ""
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
@@ -157,7 +158,7 @@ ROUGH_GONDRET = ["-contact_roughness", 5e-5]
 
 
 def restitution():
-    fig, ax = plt.subplots(figsize=(6, 4.2))
+    fig, ax = plt.subplots(figsize=(9, 4.2))
     s = [10 ** (k / 50) for k in range(0, 151)]
     ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
@@ -169,17 +170,19 @@ def restitution():
                 label="lubrication theory, rigid sphere (L = %.2f)" % L)
     failures = []
     steel = (STEEL, RHO_F)
-    sets = ((HYDRO, [], "s", ST_LIST, steel), ("keep", [], "o", [40, 152, 500], steel), (HYDRO, PLAIN, "^", [40, 152, 500], steel))
+    sets = ((HYDRO, [], "s", ST_LIST, steel), ("keep", NO_DEPARTURE, "o", [40, 152, 500], steel),  # (the departure needs limit)
+            (HYDRO, PLAIN, "^", [40, 152, 500], steel))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
         sets = sets[:1]
     if "--roughness" in sys.argv:  # the cases' set-up and the same with Gondret's reported roughness
         sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST, steel))
-    if "--departure" in sys.argv:  # the cases' set-up with and without the departure, steel and glass in water
-        sets = (sets[0], (HYDRO, DEPARTURE, "v", ST_LIST, steel), (HYDRO, [], "<", GLASS_ST, (GLASS, WATER)),
-                (HYDRO, DEPARTURE, ">", GLASS_ST, (GLASS, WATER)))
+    if WITHOUT:  # the cases' set-up with and without the departure, steel and glass in water
+        sets = (sets[0], (HYDRO, WITHOUT, "v", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
+                (HYDRO, WITHOUT, "<", GLASS_ST, (GLASS, WATER)))
     for hydro, extra, mark, st_list, (rho_p, rho_f) in sets:
         name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
-                        ", departure 1 cell" if extra == DEPARTURE else "") + (", glass in water" if rho_p == GLASS else "")
+                        ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
+                        ", departure 1 cell" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
@@ -192,7 +195,7 @@ def restitution():
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
             print("restitution: -contact_hydro %-24s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
                   "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
-            out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], DEPARTURE) else None
+            out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], NO_DEPARTURE) else None
             if out:
                 print("restitution: departure at nominal St %4g: %.3f m/s at gap %.3f d (the first step out of contact), "
                       "%.3f at 0.1 d: loss %.3f (lubrication theory %.3f); resolved force's impulse %+.3f m/s" %
@@ -202,13 +205,14 @@ def restitution():
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % name)
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
     ax.set_ylabel("e / e_dry")
-    ax.set_title("Restitution of a steel sphere on a wall, d/dx = %d" % res)
+    ax.set_title("Restitution of a sphere on a wall (steel in the cases' liquid%s), d/dx = %d" %
+                 (", glass in water" if WITHOUT else "", res), fontsize=9)
     print("restitution: -contact_hydro %s: %s" % (HYDRO, "all in the band (St 20-1000)" if not failures else
                                                  "outside the band at nominal St %s" % failures), flush=True)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "restitution_departure.png" if "--departure" in sys.argv else "restitution_stokes.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "restitution_departure.png" if WITHOUT else "restitution_stokes.png"), dpi=120)
 
 
 def timestep():
@@ -222,7 +226,7 @@ def timestep():
         for name, opts, mark in contacts:
             pts = []
             for cfl in cfls:
-                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts + WITH, label="dt_%s_st%d_cfl%g%s" % (name, st, cfl, SUFFIX))
+                out = restitution_run(st, HYDRO, r=8, cfl=cfl, extra=opts + WITHOUT, label="dt_%s_st%d_cfl%g%s" % (name, st, cfl, SUFFIX))
                 print("timestep: %-9s contact, nominal St %3d, CFL %6g: impact St %.1f, e/e_dry %.3f (exp(-35/St) %.3f)" %
                       (name, st, cfl, out[0], out[1] / E_DRY, math.exp(-35 / out[0])) if out else
                       "timestep: %s contact, St %d, CFL %g: no contact" % (name, st, cfl), flush=True)
@@ -274,7 +278,7 @@ def apexes(rows, a):
 def gondret(hydro=HYDRO):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, st in zip(axes, (27, 152)):
-        d, rows = gondret_run(st, hydro, extra=WITH)
+        d, rows = gondret_run(st, hydro, extra=WITHOUT)
         tref = math.sqrt(d / 9.81)
         u_in, u_out, _ = impact(rows, d / 2)
         first = next(i for i, x in enumerate(rows) if (x["z"] - d / 2) / d <= 2e-4)
@@ -346,7 +350,7 @@ def oblique_wet(material):
                    "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 1.5 * d), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
                    "-particle_density", rho_p, "-fluid_rho", rho, "-fluid_mu", mu, "-contact_friction", mu_c,
                    "-time_dt", 0.5 * d / r / (vn * math.hypot(1, pin)), "-time_final", 1.6 * d / vn, "-dem_substeps", 200,
-                   "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *WITH, case="oblique_collision.opts")  # the stretched contact's overlap; CFL 1.12 at impact (weighted, steel, Psi_in 0.1)
+                   "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *WITHOUT, case="oblique_collision.opts")  # the stretched contact's overlap; CFL 1.12 at impact (weighted, steel, Psi_in 0.1)
         out.append(psi(rows, d / 2))
     return out, mu_c, rho_p * vn * d / (9 * mu), r
 
@@ -406,7 +410,7 @@ def sensitivity():
         for name, opts, r in variants + stiff:
             label = None if name in ("reference", "d/dx 8", "d/dx 16") else \
                 "sens_st%d_%s%s" % (st, name.replace(" ", "_").replace("/", ""), SUFFIX)
-            out = restitution_run(st, HYDRO, r=r, extra=opts + WITH, label=label)
+            out = restitution_run(st, HYDRO, r=r, extra=opts + WITHOUT, label=label)
             if out is None:
                 print("sensitivity: nominal St %d, %s: no impact" % (st, name), flush=True)
                 continue

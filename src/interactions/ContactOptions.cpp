@@ -39,7 +39,7 @@ ContactConfig readContactOptions()
   k.departureCells = o.real("-contact_hydro_departure", k.departureCells,
                             "With -contact_hydro limit: a sphere leaving a wall after an impact keeps its resolved force "
                             "excluded and gets the lubrication correction from this gap, in grid cells, until it is "
-                            "that far (0: off; docs/collisions.md)");
+                            "that far (0: off; the collision cases use 1; docs/collisions.md)");
   return k;
 }
 

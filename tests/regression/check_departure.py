@@ -18,7 +18,7 @@ steel_ok = abs((leaving - at_gap) / theory - 1) <= 0.25
 print("steel, impact St %.1f: loss %.4f m/s from %.3f d to 0.1 d, lubrication theory %.4f" % (st, leaving - at_gap, leaving_gap, theory))
 
 glass = {}
-for name, extra in (("with", DEP), ("without", [])):
+for name, extra in (("with", DEP), ("without", ["-contact_hydro_departure", 0])):
     st, e, u_in, rows = c.restitution_run(500, c.HYDRO, r=8, extra=extra, rho_p=2500, rho_f=1000, label="test_departure_glass_" + name)
     glass[name] = e / c.E_DRY - math.exp(-35 / st)
     print("glass in water, %s the departure: impact St %.1f, e/e_dry %.3f, exp(-35/St) %.3f" % (name, st, e / c.E_DRY, math.exp(-35 / st)))
