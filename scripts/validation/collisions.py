@@ -14,7 +14,9 @@
   confinement: the normal mode's resolved force in boxes of 4 (the study's) to 12 d
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
-usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|all] [--res N] [--reuse] [--fine]
+  pair:        two spheres colliding head-on: e with and without the departure, and against the mask's
+               stiffness
+usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -420,6 +422,63 @@ def sensitivity():
                   (st, name, sti, e, 100 * (e / base - 1) if base else 0), flush=True)
 
 
+# --- Two spheres colliding ----------------------------------------------------------------------------
+def case_options(case, drop):
+    """The options of cases/<case> without those that start with one of the prefixes in drop."""
+    out = []
+    for line in open(os.path.join(root, "cases", case)):
+        tok = line.split("#")[0].split()
+        if tok and not tok[0].startswith(drop):
+            out += tok
+    return out
+
+
+def pair_run(st, label, extra=(), r=12):
+    """Two steel spheres of the e(St) study (the restitution case's liquid and contact) collide head-on
+    along x, one released at 0.585 m/s a diameter from the other at rest, no gravity, in a 10 d x 6 d x
+    6 d box. Returns (St of the relative speed at gap 0.1 d, e of the relative motion) or None."""
+    d, a, u = D3, D3 / 2, U_RELEASE
+    h = d / r
+    out = "/tmp/vp_col_pair_%s" % label
+    spheres = out + ".csv"
+    with open(spheres, "w") as f:
+        f.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n0,%r,%r,%r,%r,%r,%r,0,0,0,0,0\n1,%r,%r,%r,%r,%r,0,0,0,0,0,0\n" %
+                (3 * d, 3 * d, 3 * d, a, STEEL, u, 5 * d, 3 * d, 3 * d, a, STEEL))
+    physics = case_options("restitution.opts", ("-particle_", "-grid_", "-gravity", "-fluid_mu", "-time_", "-output_",
+                                                "-monitor_", "-track_", "-dem_substeps", "-health_"))
+    first = run(out, *physics, "-grid_n", "%d,%d,%d" % (10 * r, 6 * r, 6 * r), "-grid_hi", "%g,%g,%g" % (10 * d, 6 * d, 6 * d),
+                "-gravity", "0,0,0", "-fluid_mu", study_mu(st), "-particles_file", spheres, "-time_dt", 0.5 * h / u,
+                "-time_final", 8 * d / u, "-dem_substeps", 200, "-health_overlap_max", 0.3, "-health_cfl_max", 1.5,
+                *extra, case="none")
+    second = [{k: float(v) for k, v in x.items()} for x in csv.DictReader(open(os.path.join(out, "particle_1.csv")))]
+    # The relative motion as a sphere over a floor: gap x1 - x0 - d, its rate vx1 - vx0.
+    rel = [{"z": a + q["x"] - p["x"] - d, "vz": q["vx"] - p["vx"]} for p, q in zip(first, second)]
+    u_in, u_out, touched = impact(rel, a)
+    if u_in is None or not touched:
+        return None
+    return STEEL * u_in * d / (9 * study_mu(st)), u_out / u_in
+
+
+def pair():
+    """e of two colliding spheres with and without the departure, and with the mask's stiffness halved
+    and doubled (lambda as in sensitivity()), d/dx 12."""
+    h = D3 / 12
+    for st in (40, 152):
+        lam = max(400 * study_mu(st) / RHO_F / h ** 2, 40 * U_RELEASE / h)
+        base = {}
+        for dep in (1, 0):
+            for f in ((1, 0.5, 2) if st == 40 else (1,)):
+                extra = ["-contact_hydro_departure", dep] + ([] if f == 1 else ["-penalization_lambda", f * lam])
+                out = pair_run(st, "st%d_dep%d_lam%g" % (st, dep, f), extra)
+                if out is None:
+                    print("pair: nominal St %d, departure %d, lambda x%g: no rebound" % (st, dep, f), flush=True)
+                    continue
+                base.setdefault(dep, out[1])
+                print("pair: nominal St %3d, departure %d, lambda x%-3g: St %.1f (relative speed at 0.1 d), e %.3f, "
+                      "e/e_dry %.3f (%+.1f %% vs lambda x1)" % (st, dep, f, out[0], out[1], out[1] / E_DRY,
+                                                              100 * (out[1] / base[dep] - 1)), flush=True)
+
+
 # --- Calibration: fixed spheres with a prescribed motion in Stokes flow ------------------------------
 A, MU, U = 0.5, 1.0, 0.01          # radius, viscosity, speed (Re = 0.01); d = 1
 GAPS = [0.01, 0.05, 0.1, 0.2, 0.5, 1.0]
@@ -637,6 +696,6 @@ def pair_position_figure(by_gap):
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity"):
+    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair"):
         if what in (name, "all") and name in globals():
             globals()[name]()

@@ -37,7 +37,7 @@ ContactConfig readContactOptions()
                                                "Resolved hydrodynamic force during contact: keep, exclude (buoyancy stays), "
                                                "limit (excluded beyond the buoyant-weight overlap)"));
   k.departureCells = o.real("-contact_hydro_departure", k.departureCells,
-                            "With -contact_hydro limit: a sphere leaving a wall after an impact keeps its resolved force "
+                            "With -contact_hydro limit: a sphere leaving a wall or another sphere after an impact keeps its resolved force "
                             "excluded and gets the lubrication correction from this gap, in grid cells, until it is "
                             "that far (0: off; the collision cases use 1; docs/collisions.md)");
   return k;

@@ -44,7 +44,7 @@ int particleColumnCount()
 
 const std::string kParticleColumns = particleColumns();
 const int kParticleCols = particleColumnCount();
-constexpr int kContactCols = 5;  // id, partner id, spring x, y, z
+constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent before 2026-11-26)
 
 void pack(const ParticleRecord& r, double* o)
 {
@@ -154,7 +154,8 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   for (std::size_t i = 0; i < owned.size(); ++i) {
     pack(owned[i], &rows[kParticleCols * i]);
     for (const ContactSpring& c : owned[i].history)
-      for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z}) contacts.push_back(v);
+      for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z, double(c.departure)})
+        contacts.push_back(v);
   }
   int rank;
   MPI_Comm_rank(comm_, &rank);
@@ -228,6 +229,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   MPI_Comm_rank(comm, &rank);
   std::string error;
   std::vector<double> header, rows, contacts, fieldSnaps, particleSnaps;
+  std::size_t contactCols = kContactCols;
   double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
     h5::QuietErrors quiet;
@@ -286,6 +288,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       if (!error.empty()) break;
       const std::string e = h5::readTable(file, name, *data, r, c);
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
+      else if (data == &contacts && r > 0 && c == kContactCols - 1) contactCols = c;  // before the departure state
       else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
     // Older checkpoints lack these: their set-up is not compared, their floor restarts from the state.
@@ -307,10 +310,12 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     particles_.push_back(unpack(&rows[kParticleCols * i]));
     index[particles_.back().id] = i;
   }
-  for (std::size_t k = 0; k + kContactCols <= contacts.size(); k += kContactCols) {
+  MPI_Bcast(&contactCols, 1, MPI_UNSIGNED_LONG, 0, comm);
+  for (std::size_t k = 0; k + contactCols <= contacts.size(); k += contactCols) {
     const auto it = index.find(static_cast<std::int64_t>(contacts[k]));
     if (it == index.end()) failOption("-restart", "'" + path + "' has a contact spring of an unknown particle (damaged checkpoint)");
-    particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]}});
+    const auto departure = static_cast<std::uint8_t>(contactCols == kContactCols ? contacts[k + 5] : 0);
+    particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]}, departure});
   }
 }
 

@@ -58,7 +58,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   lub_.complete(hmin, hydro_, 2 * pc_.contact.roughness, rmax_);
   if (hydro_ && resolvedInContact_ == ContactHydro::Limit) departureGap_ = pc_.contact.departureCells * hmin;
   if (lub_.model != LubModel::None) {
-    lubGap_ = lub_.activationGap(rmax_);
+    lubGap_ = std::max(lub_.activationGap(rmax_), departureGap_);  // pairs stay listed while they depart
     lubStableSubstep_ = 0.5 / lubricationRate(all);
   }
   // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
@@ -69,8 +69,8 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
   // A checkpoint written with other -contact_hydro options: their flags do not apply here.
-  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact)
-                             : departureGap_ == 0                    ? (kDeparting | kWallImpact) : 0;
+  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting)
+                             : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
   for (std::size_t i = 0; i < store_.nOwned; ++i) store_.flags[i] &= ~stale;
   rebuild();
   // Initial forces (zero step: springs keep their state). A restart has those of the last
@@ -138,7 +138,7 @@ void DemSolver::computeForces(double dt)
   if (resolvedInContact_ != ContactHydro::Keep)
     for (std::size_t i = 0; i < s.size(); ++i) {
       const bool candidate = departureGap_ > 0 && (s.flags[i] & (kWallImpact | kDeparting));
-      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact)) | (candidate ? kDeparting : 0);
+      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting)) | (candidate ? kDeparting : 0);
     }
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
@@ -155,10 +155,19 @@ void DemSolver::computeForces(double dt)
     if (!touching && !lubricated) continue;  // most listed pairs of a dry packing: no square root
     const double r = std::sqrt(r2);
     const double gap = r - s.radius[i] - s.radius[j];
-    // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
-    const bool lubricating = lubricated && !touching && gap < lub_.activationGap(std::min(s.radius[i], s.radius[j]));
-    if (!touching && !lubricating) continue;
+    const double amin = std::min(s.radius[i], s.radius[j]);
     const Vec3 n = (1 / r) * d;
+    // Leaving each other after an impact, closer than the departure gap: as at a wall, the resolved
+    // force of both stays excluded and the correction stands for the film below that gap.
+    const bool leaving = departureGap_ > 0 && (P.departure[k] & (kPairImpact | kPairLeaving)) &&
+                         dot(s.v[i] - s.v[j], n) > 0 && gap < departureGap_;
+    // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
+    const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving);
+    std::uint8_t departure = 0;
+    if (!touching && !lubricating) {
+      P.departure[k] = 0;
+      continue;
+    }
     Vec3 force, torqueI, torqueJ;
     if (touching) {
       P.touching[k] = 1;
@@ -177,7 +186,16 @@ void DemSolver::computeForces(double dt)
       contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
       if (excludesResolvedForce(i, reach - r, law.kn)) s.flags[i] |= kResolvedForceOff;
       if (excludesResolvedForce(j, reach - r, law.kn)) s.flags[j] |= kResolvedForceOff;
+      if (departureGap_ > 0 && (excludesResolvedForce(i, (reach - r) / 2, law.kn) || excludesResolvedForce(j, (reach - r) / 2, law.kn)))
+        departure = kPairImpact;
     }
+    // A new impact ends a departure.
+    if (leaving && !departure) {
+      departure = kPairLeaving;
+      s.flags[i] |= kPairDeparting;
+      s.flags[j] |= kPairDeparting;
+    }
+    P.departure[k] = departure;
     if (lubricating) {
       PairState st;
       st.normal = -n;  // from i towards j
@@ -189,7 +207,9 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityI = s.w[i];
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
-      const PairForce l = lubricationForce(lub_, st, rough * (s.radius[i] + s.radius[j]));
+      LubricationParams film = lub_;
+      if (leaving) film.activation = std::max(departureGap_, lub_.activationGap(amin)) / amin;
+      const PairForce l = lubricationForce(film, st, rough * (s.radius[i] + s.radius[j]));
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
       force += l.forceI;
       torqueI += l.torqueI;

@@ -37,6 +37,7 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
   law.resize(n);
   spring.resize(n);
   touching.assign(n, 0);
+  departure.assign(n, 0);
   laws.clear();
   lawOfMass_.clear();
   for (std::size_t k = 0; k < n; ++k) {
@@ -51,9 +52,10 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
     }
     law[k] = found->second;
     const std::size_t owner = a < s.nOwned ? a : b;
-    const Vec3* h = findSpring(s.history[owner], s.id[owner == a ? b : a]);
-    spring[k] = h ? *h : Vec3{};
-    touching[k] = h != nullptr;
+    const ContactSpring* h = findContact(s.history[owner], s.id[owner == a ? b : a]);
+    spring[k] = h ? h->spring : Vec3{};
+    touching[k] = h && norm(h->spring) > 0;
+    departure[k] = h ? h->departure : 0;
   }
 }
 
@@ -61,9 +63,9 @@ void PairList::exportHistory(ParticleStore& s) const
 {
   for (std::size_t k = 0; k < size(); ++k) {
     const Vec3& sp = spring[k];
-    if (sp.x == 0 && sp.y == 0 && sp.z == 0) continue;
-    if (first[k] < s.nOwned) s.history[first[k]].push_back({s.id[second[k]], sp});
-    if (second[k] < s.nOwned) s.history[second[k]].push_back({s.id[first[k]], sp});
+    if (sp.x == 0 && sp.y == 0 && sp.z == 0 && !departure[k]) continue;
+    if (first[k] < s.nOwned) s.history[first[k]].push_back({s.id[second[k]], sp, departure[k]});
+    if (second[k] < s.nOwned) s.history[second[k]].push_back({s.id[first[k]], sp, departure[k]});
   }
 }
 

@@ -145,3 +145,98 @@ TEST_CASE("Departure: a sphere settling onto the wall and lifted from it never s
   CHECK(touched);
   CHECK(s.x[0].z - kA > hc);  // lifted off
 }
+
+namespace {
+
+// The squeeze resistance of two equal spheres (force per approach speed) at gap h.
+double pairResistance(double h)
+{
+  PairState st;
+  st.normal = {1, 0, 0};
+  st.gap = h;
+  st.radiusI = st.radiusJ = kA;
+  st.velocityI = {1, 0, 0};
+  st.viscosity = kMu;
+  return std::fabs(lubricationModelForce(LubModel::Llcm, 1.0, st).forceI.x);
+}
+
+struct PairSample {
+  double gap, separation;  // surface gap and the speed at which it opens
+  bool departing;          // both spheres flagged
+  std::size_t rebuilds;
+};
+
+// Sphere 1 at 1 m/s onto sphere 2 at rest along x, no gravity (every contact is then an impact).
+std::vector<PairSample> pairImpact(double cells)
+{
+  Config c = liquidBox();
+  c.gravity = {0, 0, 0};
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  ParticleConfig pc = departureConfig(cells);
+  pc.skin = 0.02;  // rebuilds the pair list during the departure: its state must survive them
+  const double x0 = 0.009, half = kA + 0.15e-3;
+  DemSolver dem(grid, c, pc, {sphere(1, {x0 - half, 0.009, 0.009}, kA, kSteel, {1, 0, 0}), sphere(2, {x0 + half, 0.009, 0.009}, kA, kSteel)});
+  ParticleStore& s = dem.particles();
+  std::vector<PairSample> out;
+  const double dt = 1e-5;
+  for (int k = 0; k < 80; ++k) {
+    dem.advance(k * dt, dt);
+    const std::size_t a = s.id[0] == 1 ? 0 : 1, b = 1 - a;
+    out.push_back({s.x[b].x - s.x[a].x - 2 * kA, s.v[b].x - s.v[a].x,
+                   (s.flags[a] & kPairDeparting) && (s.flags[b] & kPairDeparting), dem.rebuilds()});
+  }
+  return out;
+}
+
+double separationAt(const std::vector<PairSample>& run, double level)
+{
+  for (size_t k = 1; k < run.size(); ++k)
+    if (run[k].separation > 0 && run[k - 1].gap < level && run[k].gap >= level) {
+      const double w = (level - run[k - 1].gap) / (run[k].gap - run[k - 1].gap);
+      return run[k - 1].separation + w * (run[k].separation - run[k - 1].separation);
+    }
+  return NAN;
+}
+
+// The integral of R(h) - R(hAct) of the pair from the contact gap to hAct.
+double pairCorrectionIntegral(double hContact, double hAct)
+{
+  const int n = 4000;
+  const double ratio = std::log(hAct / hContact), rAct = pairResistance(hAct);
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double h = hContact * std::exp((k + 0.5) / n * ratio);
+    sum += (pairResistance(h) - rAct) * h;
+  }
+  return sum * ratio / n;
+}
+
+} // namespace
+
+TEST_CASE("Departure of a pair: both spheres leave with the correction from C cells, across list rebuilds", "[dem][lub]")
+{
+  const double cell = 0.018 / kCells, C = 1.0;
+  const std::vector<PairSample> with = pairImpact(C), without = pairImpact(0);
+  bool departed = false, rebuiltWhileDeparting = false;
+  for (size_t k = 1; k < with.size(); ++k) {
+    const PairSample& x = with[k];
+    INFO("gap " << x.gap / cell << " cells, separating at " << x.separation << " m/s");
+    if (x.gap > 1.05 * C * cell || x.separation < 0) CHECK_FALSE(x.departing);
+    if (x.separation > 0 && x.gap > 0 && x.gap < 0.95 * C * cell) CHECK(x.departing);
+    departed = departed || x.departing;
+    rebuiltWhileDeparting = rebuiltWhileDeparting || (x.departing && with[k - 1].departing && x.rebuilds > with[k - 1].rebuilds);
+  }
+  CHECK(departed);
+  CHECK(rebuiltWhileDeparting);
+  for (const PairSample& x : without) CHECK_FALSE(x.departing);
+
+  // The relative motion has the reduced mass m/2: above C cells the pair separates slower than
+  // without the option by (2/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh].
+  const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = kRough * 2 * kA * 2 / 2;
+  const double expected = 2 / m * (pairCorrectionIntegral(hc, C * cell) - pairCorrectionIntegral(hc, 0.18 * cell));
+  const double level = 1.2 * C * cell, got = separationAt(without, level) - separationAt(with, level);
+  INFO("separation speed at " << level / cell << " cells: without " << separationAt(without, level) << ", with "
+                              << separationAt(with, level) << " m/s; difference " << got << " against " << expected);
+  REQUIRE(expected > 0.01);
+  CHECK(std::fabs(got / expected - 1) < 0.02);
+}

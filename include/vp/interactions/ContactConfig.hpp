@@ -27,8 +27,9 @@ struct ContactConfig {
   double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
   double rollingFriction = 0; // mu_r: rolling resistance torque mu_r R* k_n delta (0: none)
   ContactHydro hydro = ContactHydro::Limit;  // measured: docs/collisions.md
-  // With Limit: a sphere leaving a wall after an impact keeps its resolved force excluded, and gets
-  // the whole lubrication correction, until its gap exceeds this many grid cells (0: off).
+  // With Limit: a sphere leaving a wall or another sphere after an impact keeps its resolved force
+  // excluded, and gets the lubrication correction from this gap, until its gap exceeds this many grid
+  // cells (0: off).
   double departureCells = 0;
 
   bool stiffnessGiven() const { return tc > 0 || tcSteps > 0 || kn > 0; }

@@ -85,7 +85,7 @@ private:
     return resolvedOff(i) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
-  bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting); }
+  bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting | kPairDeparting); }
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
@@ -107,7 +107,7 @@ private:
   LubricationParams lub_;  // model none: no lubrication pairs
   double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
   double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
-  double lubGap_ = 0;      // largest activation gap [m]
+  double lubGap_ = 0;      // largest activation or departure gap [m]
   double departureGap_ = 0;  // -contact_hydro_departure in metres (0: off)
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs

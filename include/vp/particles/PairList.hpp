@@ -21,6 +21,7 @@ struct PairList {
   std::vector<ContactCoefficients> laws;
   std::vector<Vec3> spring;                    // tangential spring (canonical orientation)
   std::vector<std::uint8_t> touching;          // in contact at the last force evaluation
+  std::vector<std::uint8_t> departure;         // PairDeparture bits (-contact_hydro_departure)
 
   std::size_t size() const { return first.size(); }
 
@@ -28,7 +29,7 @@ struct PairList {
   // owned members' ContactHistory (which the caller fills before and clears after).
   void build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law,
              double lubricationGap);
-  // Copies the non-zero springs into the ContactHistory of the owned members.
+  // Copies the non-zero springs and departure states into the ContactHistory of the owned members.
   void exportHistory(ParticleStore& s) const;
 
 private:
