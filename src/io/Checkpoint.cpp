@@ -229,7 +229,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   MPI_Comm_rank(comm, &rank);
   std::string error;
   std::vector<double> header, rows, contacts, fieldSnaps, particleSnaps;
-  std::size_t contactCols = kContactCols;
+  int contactCols = kContactCols;
   double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
     h5::QuietErrors quiet;
@@ -288,7 +288,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       if (!error.empty()) break;
       const std::string e = h5::readTable(file, name, *data, r, c);
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
-      else if (data == &contacts && r > 0 && c == kContactCols - 1) contactCols = c;  // before the departure state
+      else if (data == &contacts && r > 0 && c == kContactCols - 1) contactCols = kContactCols - 1;  // before the departure state
       else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
     // Older checkpoints lack these: their set-up is not compared, their floor restarts from the state.
@@ -310,12 +310,15 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     particles_.push_back(unpack(&rows[kParticleCols * i]));
     index[particles_.back().id] = i;
   }
-  MPI_Bcast(&contactCols, 1, MPI_UNSIGNED_LONG, 0, comm);
+  MPI_Bcast(&contactCols, 1, MPI_INT, 0, comm);
   for (std::size_t k = 0; k + contactCols <= contacts.size(); k += contactCols) {
     const auto it = index.find(static_cast<std::int64_t>(contacts[k]));
     if (it == index.end()) failOption("-restart", "'" + path + "' has a contact spring of an unknown particle (damaged checkpoint)");
-    const auto departure = static_cast<std::uint8_t>(contactCols == kContactCols ? contacts[k + 5] : 0);
-    particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]}, departure});
+    const double departure = contactCols == kContactCols ? contacts[k + 5] : 0;
+    if (!(departure >= 0 && departure <= (kPairImpact | kPairLeaving)))
+      failOption("-restart", "'" + path + "' has a contact with an invalid departure state (damaged checkpoint)");
+    particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]},
+                                             static_cast<std::uint8_t>(departure)});
   }
 }
 

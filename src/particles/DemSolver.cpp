@@ -71,7 +71,11 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // A checkpoint written with other -contact_hydro options: their flags do not apply here.
   const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting)
                              : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
-  for (std::size_t i = 0; i < store_.nOwned; ++i) store_.flags[i] &= ~stale;
+  for (std::size_t i = 0; i < store_.nOwned; ++i) {
+    store_.flags[i] &= ~stale;
+    if (departureGap_ == 0)
+      for (ContactSpring& c : store_.history[i]) c.departure = 0;
+  }
   rebuild();
   // Initial forces (zero step: springs keep their state). A restart has those of the last
   // sub-step, computed from the predicted velocities: recomputing them would change the run.
@@ -176,7 +180,7 @@ void DemSolver::computeForces(double dt)
       const Vec3 vc = contactVelocity(s.v[i], s.w[i], scale * s.radius[i], s.v[j], s.w[j], scale * s.radius[j], n);
       const ContactCoefficients& law = P.laws[P.law[k]];
       const ContactForce f = contactForce(n, reach - r, vc, law, P.spring[k], dt);
-      noteOverlap((reach - r) / (2 * std::min(s.radius[i], s.radius[j])), s.id[i], s.id[j]);
+      noteOverlap((reach - r) / (2 * amin), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
       const Vec3 lever = scale * cross(n, f.tangential);
       const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR, s.radius[i], s.radius[j],
@@ -207,9 +211,7 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityI = s.w[i];
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
-      LubricationParams film = lub_;
-      if (leaving) film.activation = std::max(departureGap_, lub_.activationGap(amin)) / amin;
-      const PairForce l = lubricationForce(film, st, rough * (s.radius[i] + s.radius[j]));
+      const PairForce l = lubricationForce(leaving ? departureFilm(amin) : lub_, st, rough * (s.radius[i] + s.radius[j]));
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
       force += l.forceI;
       torqueI += l.torqueI;
@@ -275,9 +277,7 @@ void DemSolver::computeForces(double dt)
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
           st.slipWall = wall.slip;
-          LubricationParams film = lub_;
-          if (leaving) film.activation = std::max(departureGap_, lub_.activationGap(a)) / a;
-          const PairForce l = lubricationForce(film, st, 2 * rough * a);
+          const PairForce l = lubricationForce(leaving ? departureFilm(a) : lub_, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           F += l.forceI;
           T += l.torqueI;
@@ -315,6 +315,15 @@ OverlapRecord DemSolver::takeLargestOverlap()
   const OverlapRecord r = largestOverlap_;
   largestOverlap_ = OverlapRecord{};
   return r;
+}
+
+LubricationParams DemSolver::departureFilm(double a) const
+{
+  LubricationParams film = lub_;
+  // An activation in radii: the squeeze and the tangential terms both from the departure gap, since
+  // the resolved force and torque are both off (at least the default activation).
+  film.activation = std::max(departureGap_, lub_.activationGap(a)) / a;
+  return film;
 }
 
 bool DemSolver::nearWall(const Vec3& x, double reach) const

@@ -10,6 +10,8 @@ struct Candidate {
   std::uint32_t first, second;
 };
 
+bool isZero(const Vec3& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
 } // namespace
 
 void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& contactLaw,
@@ -54,7 +56,7 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
     const std::size_t owner = a < s.nOwned ? a : b;
     const ContactSpring* h = findContact(s.history[owner], s.id[owner == a ? b : a]);
     spring[k] = h ? h->spring : Vec3{};
-    touching[k] = h && norm(h->spring) > 0;
+    touching[k] = h && !isZero(h->spring);
     departure[k] = h ? h->departure : 0;
   }
 }
@@ -63,7 +65,7 @@ void PairList::exportHistory(ParticleStore& s) const
 {
   for (std::size_t k = 0; k < size(); ++k) {
     const Vec3& sp = spring[k];
-    if (sp.x == 0 && sp.y == 0 && sp.z == 0 && !departure[k]) continue;
+    if (isZero(sp) && !departure[k]) continue;
     if (first[k] < s.nOwned) s.history[first[k]].push_back({s.id[second[k]], sp, departure[k]});
     if (second[k] < s.nOwned) s.history[second[k]].push_back({s.id[first[k]], sp, departure[k]});
   }

@@ -48,8 +48,17 @@ TEST_CASE("Pair departure across ranks (-contact_hydro_departure): bitwise one-r
   ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 5e-4, LubModel::Blcm, 0.1);
   pc.contact.departureCells = 0.25;  // 0.25 mm; the activation 0.1 a = 0.1 mm
   const double a = 1e-3;
-  const std::vector<ParticleRecord> p = {sphere(1, {0.02 - a * 1.2, 0.005, 0.005}, a, 7800, {0.2, 0, 0}),
-                                         sphere(2, {0.02 + a * 1.2, 0.005, 0.005}, a, 7800, {-0.2, 0, 0})};
+  // On the upper boundary of rank 0's block (the middle with one rank): the pair is split on any count.
+  double xc = 0.02;
+  int size;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  if (size > 1) {
+    const Grid probe(PETSC_COMM_WORLD, c.grid, c.bc);
+    xc = probe.faceCoord(0, probe.end(0));
+    MPI_Bcast(&xc, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  }
+  const std::vector<ParticleRecord> p = {sphere(1, {xc - a * 1.2, 0.005, 0.005}, a, 7800, {0.2, 0, 0}),
+                                         sphere(2, {xc + a * 1.2, 0.005, 0.005}, a, 7800, {-0.2, 0, 0})};
   const double dt = 2e-6;
   auto run = [&](MPI_Comm comm, int& departed) {
     Grid grid(comm, c.grid, c.bc);

@@ -36,7 +36,7 @@ void fill(WallSprings& a, std::int64_t id, int f, int round)
 }
 void fill(ContactHistory& h, std::int64_t id, int f, int round)
 {
-  h = {{id + 1, {}}, {id + 2, {}}};
+  h = {{id + 1, {}, kPairImpact}, {id + 2, {}, kPairLeaving}};
   fill(h[0].spring, id, f, round);
   fill(h[1].spring, id, f + 1, round);
 }
@@ -47,7 +47,7 @@ bool same(const T& a, const T& b)
   if constexpr (std::is_same_v<T, ContactHistory>) {
     if (a.size() != b.size()) return false;
     for (std::size_t k = 0; k < a.size(); ++k)
-      if (a[k].partner != b[k].partner || !same(a[k].spring, b[k].spring)) return false;
+      if (a[k].partner != b[k].partner || !same(a[k].spring, b[k].spring) || a[k].departure != b[k].departure) return false;
     return true;
   } else {
     return std::memcmp(&a, &b, sizeof(T)) == 0;

@@ -232,7 +232,7 @@ TEST_CASE("Departure of a pair: both spheres leave with the correction from C ce
 
   // The relative motion has the reduced mass m/2: above C cells the pair separates slower than
   // without the option by (2/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh].
-  const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = kRough * 2 * kA * 2 / 2;
+  const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = kRough * 2 * kA;  // roughness of the mean diameter
   const double expected = 2 / m * (pairCorrectionIntegral(hc, C * cell) - pairCorrectionIntegral(hc, 0.18 * cell));
   const double level = 1.2 * C * cell, got = separationAt(without, level) - separationAt(with, level);
   INFO("separation speed at " << level / cell << " cells: without " << separationAt(without, level) << ", with "

@@ -75,6 +75,9 @@ private:
   void addStokesDrag();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
+  // The lubrication parameters of a sphere of radius a (the smaller of a pair) leaving after an
+  // impact: the correction from the departure gap (-contact_hydro_departure).
+  LubricationParams departureFilm(double a) const;
   // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
   bool excludesResolvedForce(std::size_t i, double overlap, double kn) const;
   // The resolved force and torque particle i feels: without the dynamic part while excluded

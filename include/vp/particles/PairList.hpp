@@ -2,7 +2,7 @@
 // Verlet neighbour list of particle pairs (owned x owned once, owned x ghost once), built from
 // CellBuckets with a skin and kept until some particle has moved half the skin. Each pair is
 // stored in canonical orientation (first = lower global id) with its contact coefficients and its
-// tangential spring, and the list is sorted by (first id, second id). Scattering pair forces in
+// tangential spring and departure state, and the list is sorted by (first id, second id). Scattering pair forces in
 // list order then adds to every particle its partners' contributions in ascending partner id:
 // the partners below its id come first (pairs led by them), then those above (pairs it leads).
 // That order does not depend on the decomposition, so the sums are bitwise rank-independent.
@@ -25,8 +25,8 @@ struct PairList {
 
   std::size_t size() const { return first.size(); }
 
-  // Pairs closer than (a_i + a_j)(1 + roughness) + lubricationGap + skin; springs taken from the
-  // owned members' ContactHistory (which the caller fills before and clears after).
+  // Pairs closer than (a_i + a_j)(1 + roughness) + lubricationGap + skin; springs and departure
+  // states taken from the owned members' ContactHistory (filled by the caller before, cleared after).
   void build(const ParticleStore& s, const CellBuckets& buckets, double skin, const ContactLaw& law,
              double lubricationGap);
   // Copies the non-zero springs and departure states into the ContactHistory of the owned members.
