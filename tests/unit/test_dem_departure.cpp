@@ -53,13 +53,14 @@ std::vector<Sample> fall(double cells, double gap0, double vz0, int steps, doubl
   return out;
 }
 
-// The upward speed as the gap first passes `level` on the way up.
-double upwardSpeedAt(const std::vector<Sample>& run, double level)
+// The speed at which the gap opens (member `speed` of the samples) as it first passes `level`.
+template <class S>
+double openingSpeedAt(const std::vector<S>& run, double level, double S::*speed)
 {
   for (size_t k = 1; k < run.size(); ++k)
-    if (run[k].vz > 0 && run[k - 1].gap < level && run[k].gap >= level) {
+    if (run[k].*speed > 0 && run[k - 1].gap < level && run[k].gap >= level) {
       const double w = (level - run[k - 1].gap) / (run[k].gap - run[k - 1].gap);
-      return run[k - 1].vz + w * (run[k].vz - run[k - 1].vz);
+      return run[k - 1].*speed + w * (run[k].*speed - run[k - 1].*speed);
     }
   return NAN;
 }
@@ -77,15 +78,15 @@ double resistance(double h)
   return std::fabs(lubricationModelForce(LubModel::Llcm, 1.0, st).forceI.z);
 }
 
-// The integral of R(h) - R(hAct) from the contact gap to hAct (midpoint rule in ln h).
-double correctionIntegral(double hContact, double hAct)
+// The integral of R(h) - R(hAct) of a resistance R from the contact gap to hAct (midpoint rule in ln h).
+double correctionIntegral(double (*R)(double), double hContact, double hAct)
 {
   const int n = 4000;
-  const double ratio = std::log(hAct / hContact), rAct = resistance(hAct);
+  const double ratio = std::log(hAct / hContact), rAct = R(hAct);
   double sum = 0;
   for (int k = 0; k < n; ++k) {
     const double h = hContact * std::exp((k + 0.5) / n * ratio);
-    sum += (resistance(h) - rAct) * h;
+    sum += (R(h) - rAct) * h;
   }
   return sum * ratio / n;
 }
@@ -115,10 +116,10 @@ TEST_CASE("Departure: a wall impact starts it, it ends at the departure gap, the
   // correction from C cells instead of the activation gap, so above C cells the sphere is slower
   // by (1/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh] (dv = -(R/m) dh at any speed).
   const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = 2 * kRough * kA;
-  const double expected = (correctionIntegral(hc, C * cell) - correctionIntegral(hc, 0.18 * cell)) / m;
-  const double level = 1.2 * C * cell, got = upwardSpeedAt(without, level) - upwardSpeedAt(with, level);
-  INFO("speed at " << level / cell << " cells: without " << upwardSpeedAt(without, level) << ", with "
-                   << upwardSpeedAt(with, level) << " m/s; difference " << got << " against " << expected);
+  const double expected = (correctionIntegral(resistance, hc, C * cell) - correctionIntegral(resistance, hc, 0.18 * cell)) / m;
+  const double level = 1.2 * C * cell, got = openingSpeedAt(without, level, &Sample::vz) - openingSpeedAt(with, level, &Sample::vz);
+  INFO("speed at " << level / cell << " cells: without " << openingSpeedAt(without, level, &Sample::vz) << ", with "
+                   << openingSpeedAt(with, level, &Sample::vz) << " m/s; difference " << got << " against " << expected);
   REQUIRE(expected > 0.01);
   CHECK(std::fabs(got / expected - 1) < 0.02);
 }
@@ -188,29 +189,6 @@ std::vector<PairSample> pairImpact(double cells)
   return out;
 }
 
-double separationAt(const std::vector<PairSample>& run, double level)
-{
-  for (size_t k = 1; k < run.size(); ++k)
-    if (run[k].separation > 0 && run[k - 1].gap < level && run[k].gap >= level) {
-      const double w = (level - run[k - 1].gap) / (run[k].gap - run[k - 1].gap);
-      return run[k - 1].separation + w * (run[k].separation - run[k - 1].separation);
-    }
-  return NAN;
-}
-
-// The integral of R(h) - R(hAct) of the pair from the contact gap to hAct.
-double pairCorrectionIntegral(double hContact, double hAct)
-{
-  const int n = 4000;
-  const double ratio = std::log(hAct / hContact), rAct = pairResistance(hAct);
-  double sum = 0;
-  for (int k = 0; k < n; ++k) {
-    const double h = hContact * std::exp((k + 0.5) / n * ratio);
-    sum += (pairResistance(h) - rAct) * h;
-  }
-  return sum * ratio / n;
-}
-
 } // namespace
 
 TEST_CASE("Departure of a pair: both spheres leave with the correction from C cells, across list rebuilds", "[dem][lub]")
@@ -233,10 +211,10 @@ TEST_CASE("Departure of a pair: both spheres leave with the correction from C ce
   // The relative motion has the reduced mass m/2: above C cells the pair separates slower than
   // without the option by (2/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh].
   const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = kRough * 2 * kA;  // roughness of the mean diameter
-  const double expected = 2 / m * (pairCorrectionIntegral(hc, C * cell) - pairCorrectionIntegral(hc, 0.18 * cell));
-  const double level = 1.2 * C * cell, got = separationAt(without, level) - separationAt(with, level);
-  INFO("separation speed at " << level / cell << " cells: without " << separationAt(without, level) << ", with "
-                              << separationAt(with, level) << " m/s; difference " << got << " against " << expected);
+  const double expected = 2 / m * (correctionIntegral(pairResistance, hc, C * cell) - correctionIntegral(pairResistance, hc, 0.18 * cell));
+  const double level = 1.2 * C * cell, got = openingSpeedAt(without, level, &PairSample::separation) - openingSpeedAt(with, level, &PairSample::separation);
+  INFO("separation speed at " << level / cell << " cells: without " << openingSpeedAt(without, level, &PairSample::separation) << ", with "
+                              << openingSpeedAt(with, level, &PairSample::separation) << " m/s; difference " << got << " against " << expected);
   REQUIRE(expected > 0.01);
   CHECK(std::fabs(got / expected - 1) < 0.02);
 }
