@@ -218,3 +218,30 @@ TEST_CASE("Departure of a pair: both spheres leave with the correction from C ce
   REQUIRE(expected > 0.01);
   CHECK(std::fabs(got / expected - 1) < 0.02);
 }
+
+TEST_CASE("Departure of a pair: a sphere settling onto a fixed sphere and lifted from it never starts one", "[dem][lub]")
+{
+  // As at a wall: released touching at rest, the damped spring stays below twice the buoyant-weight
+  // overlap, so the contact is no impact (the pair's threshold, with gravity).
+  const Config c = liquidBox();
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  ParticleRecord anchor = sphere(1, {0.009, 0.009, 0.006}, kA, kSteel);
+  anchor.flags = kFixed;
+  const double hc = kRough * 2 * kA;  // the pair's contact gap: roughness of the mean diameter
+  DemSolver dem(grid, c, departureConfig(1.0), {anchor, sphere(2, {0.009, 0.009, 0.006 + 2 * kA + 0.999 * hc}, kA, kSteel)});
+  ParticleStore& s = dem.particles();
+  const std::size_t top = s.id[0] == 2 ? 0 : 1, bottom = 1 - top;
+  const double dt = 1e-5;
+  bool touched = false;
+  for (int k = 0; k < 500; ++k) {
+    if (k == 400) s.v[top].z = 0.05;  // lifted off at rest
+    s.fhyd[top] = (kRho / kSteel * s.mass[top] * kG) * Vec3{0, 0, 1};
+    dem.advance(k * dt, dt);
+    const double gap = s.x[top].z - s.x[bottom].z - 2 * kA;
+    touched = touched || gap < hc;
+    INFO("step " << k << ": gap " << gap << " m, vz " << s.v[top].z);
+    CHECK_FALSE(s.flags[top] & kPairDeparting);
+  }
+  CHECK(touched);
+  CHECK(s.x[top].z - s.x[bottom].z - 2 * kA > hc);  // lifted off
+}
