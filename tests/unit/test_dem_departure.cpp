@@ -245,3 +245,24 @@ TEST_CASE("Departure of a pair: a sphere settling onto a fixed sphere and lifted
   CHECK(touched);
   CHECK(s.x[top].z - s.x[bottom].z - 2 * kA > hc);  // lifted off
 }
+
+TEST_CASE("Departure: a sphere that turns back within the departure gap ends it", "[dem][lub]")
+{
+  // A slow impact (St about 5): the sphere leaves the wall but the film and its weight turn it back
+  // within C = 1 cell; from then on it is no longer leaving, down to the next contact.
+  const double cell = 0.018 / kCells;
+  const std::vector<Sample> run = fall(1.0, 0.3e-3, -0.1, 1500);
+  bool departed = false, turnedBack = false;
+  for (size_t k = 1; k < run.size(); ++k) {
+    const Sample& x = run[k];
+    INFO("step " << k << ": gap " << x.gap / cell << " cells, vz " << x.vz << " m/s, flags " << int(x.flags));
+    departed = departed || (x.flags & kDeparting);
+    if (departed && x.vz < 0 && x.gap > 0) {
+      turnedBack = true;
+      CHECK_FALSE(x.flags & kDeparting);
+    }
+    if (departed) CHECK(x.gap < cell);  // it never gets beyond the departure gap
+  }
+  CHECK(departed);
+  CHECK(turnedBack);
+}
