@@ -411,7 +411,8 @@ double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
     geometry.radiusI = ai;
     geometry.radiusJ = aj;
     const double contactGap = law_.roughnessGap(ai, std::isinf(aj) ? 0 : aj);
-    return lubricationResistance(lub_, geometry, contactGap);
+    // With the departure the correction may start from its larger gap: the larger resistance.
+    return lubricationResistance(departureGap_ > 0 ? departureFilm(std::min(ai, aj)) : lub_, geometry, contactGap);
   };
   double rate = 0, invMassMax = 0;
   for (const auto& [a, invMass] : classes) invMassMax = std::max(invMassMax, invMass);
@@ -436,7 +437,8 @@ void DemSolver::watchLubrication(const PairState& st, double contactGap, double 
   // The BLCM resistance bounds the LLCM's (docs/lubrication.md): c = 6 pi mu R^2 (1/h - 1/h_act).
   const double a = std::min(st.radiusI, st.radiusJ), R = st.reducedRadius();
   const double h = std::max({st.gap, lub_.saturation * a, contactGap});
-  const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - 1 / lub_.activationGap(a));
+  const double hAct = std::max(departureGap_, lub_.activationGap(a));  // the departure's, if larger
+  const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - 1 / hAct);
   lubRateSeen_ = std::max(lubRateSeen_, c * invMassSum);
 }
 
