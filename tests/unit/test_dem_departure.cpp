@@ -65,6 +65,18 @@ double openingSpeedAt(const std::vector<S>& run, double level, double S::*speed)
   return NAN;
 }
 
+// The run with the departure opens its gap slower at `level` than the run without, by `expected`
+// (within 2 %).
+template <class S>
+void checkSlowerBy(const std::vector<S>& with, const std::vector<S>& without, double S::*speed, double level, double expected)
+{
+  const double slow = openingSpeedAt(with, level, speed), fast = openingSpeedAt(without, level, speed);
+  INFO("opening speed at a gap of " << level << " m: without " << fast << ", with " << slow << " m/s; difference "
+                                    << fast - slow << " against " << expected);
+  REQUIRE(expected > 0.01);
+  CHECK(std::fabs((fast - slow) / expected - 1) < 0.02);
+}
+
 // The LLCM squeeze resistance (force per approach speed) of the sphere at wall gap h.
 double resistance(double h)
 {
@@ -117,11 +129,7 @@ TEST_CASE("Departure: a wall impact starts it, it ends at the departure gap, the
   // by (1/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh] (dv = -(R/m) dh at any speed).
   const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = 2 * kRough * kA;
   const double expected = (correctionIntegral(resistance, hc, C * cell) - correctionIntegral(resistance, hc, 0.18 * cell)) / m;
-  const double level = 1.2 * C * cell, got = openingSpeedAt(without, level, &Sample::vz) - openingSpeedAt(with, level, &Sample::vz);
-  INFO("speed at " << level / cell << " cells: without " << openingSpeedAt(without, level, &Sample::vz) << ", with "
-                   << openingSpeedAt(with, level, &Sample::vz) << " m/s; difference " << got << " against " << expected);
-  REQUIRE(expected > 0.01);
-  CHECK(std::fabs(got / expected - 1) < 0.02);
+  checkSlowerBy(with, without, &Sample::vz, 1.2 * C * cell, expected);
 }
 
 TEST_CASE("Departure: a sphere settling onto the wall and lifted from it never starts one", "[dem][lub]")
@@ -212,11 +220,7 @@ TEST_CASE("Departure of a pair: both spheres leave with the correction from C ce
   // without the option by (2/m) [int_hc^C (R - R(C)) dh - int_hc^act (R - R(act)) dh].
   const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, hc = kRough * 2 * kA;  // roughness of the mean diameter
   const double expected = 2 / m * (correctionIntegral(pairResistance, hc, C * cell) - correctionIntegral(pairResistance, hc, 0.18 * cell));
-  const double level = 1.2 * C * cell, got = openingSpeedAt(without, level, &PairSample::separation) - openingSpeedAt(with, level, &PairSample::separation);
-  INFO("separation speed at " << level / cell << " cells: without " << openingSpeedAt(without, level, &PairSample::separation) << ", with "
-                              << openingSpeedAt(with, level, &PairSample::separation) << " m/s; difference " << got << " against " << expected);
-  REQUIRE(expected > 0.01);
-  CHECK(std::fabs(got / expected - 1) < 0.02);
+  checkSlowerBy(with, without, &PairSample::separation, 1.2 * C * cell, expected);
 }
 
 TEST_CASE("Departure of a pair: a sphere settling onto a fixed sphere and lifted from it never starts one", "[dem][lub]")
