@@ -101,12 +101,14 @@ def departure(rows, a, mu, rho_p=STEEL):
     return g[c1], rows[c1]["vz"], u_out, impulse, theory
 
 
-def brenner_integral(lo, hi, n=2000):
-    """The integral of Brenner's resistance over the gap eps = h/a from lo to hi: a rigid sphere's
-    velocity loss over those gaps is 6 pi mu a^2 / m times it. Midpoint rule in ln(eps): the integral
-    of lambda d eps is that of lambda eps d ln(eps)."""
+def brenner_integral(lo, hi, resistance=None, n=2000):
+    """The integral of a squeeze resistance F / (6 pi mu a V) (Brenner's, a sphere at a wall, unless
+    given) over the gap eps = h/a from lo to hi: a rigid sphere's velocity loss over those gaps is
+    6 pi mu a^2 / m times it. Midpoint rule in ln(eps): the integral of lambda d eps is that of
+    lambda eps d ln(eps)."""
+    resistance = resistance or brenner
     eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
-    return sum(brenner(e) * e for e in eps) * math.log(hi / lo) / n
+    return sum(resistance(e) * e for e in eps) * math.log(hi / lo) / n
 
 
 SHORT = ["-contact_tc_steps", 0, "-contact_tc", 5e-5]  # a real impact's duration, resolved by the sub-steps
@@ -465,9 +467,7 @@ def pair_lubrication_theory(st):
     u (2 L) / St each way, L the integral of the squeeze resistance F / (6 pi mu a V) over eps = h/a.
     The resistance: its leading terms 1/(4 eps) + (9/40) ln(1/eps) plus 0.69, the constant the exact
     values (Brenner; TWO) give at eps 0.01-0.2 (within 0.03)."""
-    lo, hi, n = 4e-4, 0.2, 2000
-    eps = [lo * (hi / lo) ** ((k + 0.5) / n) for k in range(n)]
-    L = sum((1 / (4 * e) + 0.225 * math.log(1 / e) + 0.69) * e for e in eps) * math.log(hi / lo) / n
+    L = brenner_integral(4e-4, 0.2, lambda e: 1 / (4 * e) + 0.225 * math.log(1 / e) + 0.69)
     return max(0.0, 1 - (1 + 1 / E_DRY) * 2 * L / st)
 
 

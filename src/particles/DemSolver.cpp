@@ -263,7 +263,7 @@ void DemSolver::computeForces(double dt)
         }
         // Moving away from the wall after an impact, still in contact (below the buoyant-weight
         // overlap) or within the departure gap: the mask's sub-cell gap is not the squeeze
-        // (docs/collisions.md), so the correction stands for the whole film there.
+        // (docs/collisions.md), so the correction stands for the film below the departure gap.
         const bool leaving = candidate && dot(s.v[i] - wall.velocity, n) > 0 && dist - a < departureGap_;
         departing = departing || leaving;
         if (overlap <= 0 && (dist < lubReach || (leaving && lubricated))) {  // hand-off: no lubrication in contact

@@ -1,10 +1,11 @@
 #pragma once
 // Verlet neighbour list of particle pairs (owned x owned once, owned x ghost once), built from
 // CellBuckets with a skin and kept until some particle has moved half the skin. Each pair is
-// stored in canonical orientation (first = lower global id) with its contact coefficients and its
-// tangential spring and departure state, and the list is sorted by (first id, second id). Scattering pair forces in
-// list order then adds to every particle its partners' contributions in ascending partner id:
-// the partners below its id come first (pairs led by them), then those above (pairs it leads).
+// stored in canonical orientation (first = lower global id) with its contact coefficients, its
+// tangential spring and its departure state, and the list is sorted by (first id, second id).
+// Scattering pair forces in list order then adds to every particle its partners' contributions in
+// ascending partner id: the partners below its id come first (pairs led by them), then those above
+// (pairs it leads).
 // That order does not depend on the decomposition, so the sums are bitwise rank-independent.
 #include "vp/interactions/ContactModel.hpp"
 #include "vp/particles/CellBuckets.hpp"
