@@ -36,11 +36,16 @@ T get(const char*& p)
   return v;
 }
 
-// The contact history has a variable length: a count, then the springs.
+// The contact history has a variable length: a count, then the springs field by field (the
+// struct's padding bytes are never sent).
 void put(std::vector<char>& b, const ContactHistory& h)
 {
   put(b, static_cast<std::uint32_t>(h.size()));
-  for (const ContactSpring& c : h) put(b, c);
+  for (const ContactSpring& c : h) {
+    put(b, c.partner);
+    put(b, c.spring);
+    put(b, c.departure);
+  }
 }
 
 template <class T>
@@ -48,7 +53,11 @@ void getInto(const char*& p, T& v)
 {
   if constexpr (std::is_same_v<T, ContactHistory>) {
     v.resize(get<std::uint32_t>(p));
-    for (auto& c : v) c = get<ContactSpring>(p);
+    for (ContactSpring& c : v) {
+      c.partner = get<std::int64_t>(p);
+      c.spring = get<Vec3>(p);
+      c.departure = get<std::uint8_t>(p);
+    }
   } else {
     v = get<T>(p);
   }
