@@ -16,7 +16,11 @@
                mask's stiffness (lambda x0.5, x2)
   pair:        two spheres colliding head-on: e with and without the departure, and against the mask's
                stiffness
-usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|all] [--res N] [--reuse] [--fine]
+  harada:      the e(St) set-up in the Harada point-particle model (build/harada: drag, lubrication,
+               added mass with its wall images, a real contact), with and without the Basset history
+               force, and with it left out from the contact to a gap of d/16 (the departure's window
+               at d/dx 16): what the history of the boundary layer takes from a rebound, and where
+usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -217,6 +221,61 @@ def restitution():
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "restitution_departure.png" if WITHOUT else "restitution_stokes.png"), dpi=120)
+
+
+def harada_run(st, history, window=0.0):
+    """The e(St) study's sphere and release (3 d above the floor at U_RELEASE, gravity) in the Harada
+    point-particle model, the wall y = 0, with a real contact (10 us, dry restitution E_DRY) and the
+    cases' roughness. Returns (St at impact, e) as the resolved study measures them, or None."""
+    a, d = D3 / 2, D3
+    mu = study_mu(st)
+    out = "/tmp/vp_col_harada_st%g_history%d" % (st, history) + ("_window%g" % window if window else "")
+    tc = 1e-5
+    if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+        subprocess.run([str(o) for o in [os.path.join(root, "build", "harada"), "-output_dir", out, "-fluid_rho", RHO_F,
+                        "-fluid_mu", mu, "-particle_density", STEEL, "-particle_radius", a,
+                        "-particle_position", "0,%r,0" % (a + 3 * d), "-particle_velocity", "0,%r,0" % -U_RELEASE,
+                        "-gravity", "0,-9.81,0", "-contact_restitution", E_DRY, "-contact_roughness", 2e-4,
+                        "-contact_tc", tc, "-time_dt", tc / 40, "-time_final", 0.06, "-output_every", 1,
+                        "-harada_history", int(history), "-harada_history_window", window]], check=True,
+                       stdout=subprocess.DEVNULL)
+    rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(out, "particle_0.csv")))]
+    u_in, u_out, touched = impact(rows, a, axis="y")
+    if u_in is None or not touched:
+        return None
+    return STEEL * u_in * d / (9 * mu), u_out / u_in
+
+
+def harada():
+    fig, ax = plt.subplots(figsize=(8, 4))
+    s = [10 ** (k / 50) for k in range(0, 151)]
+    ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
+    ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
+                    color="0.85", label="pass band +-0.1 (St 20-1000)")
+    L = brenner_integral(4e-4, 0.2)
+    ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
+                label="lubrication theory, rigid sphere (L = %.2f)" % L)
+    window = D3 / 16  # the departure's window at d/dx 16: one cell
+    for history, win, mark in ((True, 0.0, "o"), (True, window, "s"), (False, 0.0, "x")):
+        name = "off" if not history else "on, left out from the contact to d/16" if win else "on"
+        pts = []
+        for st in ST_LIST:
+            r = harada_run(st, history, win)
+            if r is None:
+                print("harada: St %g: no contact (a creeping approach)" % st, flush=True)
+                continue
+            sti, e = r
+            pts.append((sti, e / E_DRY))
+            print("harada: history %-39s nominal St %4g: St %.1f, e/e_dry %.3f, exp(-35/St) %.3f, difference %+.3f" %
+                  (name, st, sti, e / E_DRY, math.exp(-35 / sti), e / E_DRY - math.exp(-35 / sti)), flush=True)
+        ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="Harada model, Basset history %s" % name)
+    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
+    ax.set_ylabel("e / e_dry")
+    ax.set_title("The e(St) set-up in the Harada point-particle model (steel, d = 3 mm)", fontsize=9)
+    ax.legend(fontsize=7, loc="lower right")
+    ax.set_ylim(-0.05, 1.1)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "restitution_harada.png"), dpi=120)
 
 
 def timestep():
@@ -709,6 +768,6 @@ def pair_position_figure(by_gap):
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair"):
+    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada"):
         if what in (name, "all") and name in globals():
             globals()[name]()

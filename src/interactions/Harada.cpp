@@ -43,7 +43,10 @@ void HaradaModel::step()
     // constant where it is held.
     if (!held) cImage = 0.5 * addedMass0_ * C.derivative / a * v_;
   }
-  if (p_.history) {
+  // The history window opens at a contact and closes once the gap opens past it or the sphere turns back.
+  if (held && p_.historyWindow > 0) inHistoryWindow_ = true;
+  if (inHistoryWindow_ && !held && (h > p_.historyWindow || v_ < 0)) inHistoryWindow_ = false;
+  if (p_.history && !inHistoryWindow_) {
     const double K = 6 * a * a * std::sqrt(M_PI * rho * mu);
     cBasset = K * basset_.newestWeight();
     bassetLagged = K * basset_.lagged();

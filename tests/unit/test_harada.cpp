@@ -113,6 +113,50 @@ TEST_CASE("Harada: dry contact with the wall lasts t_c and returns the restituti
   CHECK(-m.velocity() / v0 == Approx(p.restitution).epsilon(0.01));
 }
 
+TEST_CASE("Harada: the history window leaves the history force out from a contact to its gap", "[harada]")
+{
+  // A steel sphere (a = 1.5 mm) thrown at the wall in a viscous liquid, history and contact only: the
+  // velocity reversal at the contact sets off a history force that slows the way out.
+  HaradaParams p = dragOnly();
+  p.drag = false;
+  p.history = p.contact = true;
+  p.gravity = 0;
+  p.radius = 1.5e-3;
+  p.particleDensity = 7800;
+  p.fluidDensity = 935;
+  p.viscosity = 0.04;
+  p.contactTime = 1e-5;
+  p.dt = p.contactTime / 40;
+  const double window = p.radius / 8;  // d/16: a cell at d/dx 16
+  // The speed as the gap opens past 2 windows, and whether the history force was zero inside the window.
+  auto rebound = [&](bool history, double historyWindow, bool* zeroInside) {
+    HaradaParams q = p;
+    q.history = history;
+    q.historyWindow = historyWindow;
+    HaradaModel m(q, q.radius + 0.2 * q.radius, -0.4);
+    bool touched = false, zero = true, seenOutside = false;
+    while (m.time() < 0.02) {
+      m.step();
+      touched = touched || m.gap() < 2 * q.radius * q.roughness;
+      if (touched && m.velocity() > 0 && m.gap() > 2 * q.radius * q.roughness) {
+        if (m.gap() < 0.99 * window) zero = zero && m.forces().history == 0;
+        if (m.gap() > 1.01 * window) seenOutside = seenOutside || m.forces().history != 0;
+        if (m.gap() > 2 * window) break;
+      }
+    }
+    if (zeroInside) *zeroInside = zero && seenOutside;
+    return m.velocity();
+  };
+  bool zeroInside = false;
+  const double none = rebound(false, 0, nullptr), full = rebound(true, 0, nullptr), windowed = rebound(true, window, &zeroInside);
+  INFO("speed at 2 windows: no history " << none << ", history " << full << ", history out over the window " << windowed);
+  CHECK(zeroInside);
+  CHECK(full < windowed);
+  CHECK(windowed < none);
+  // Most of the history force's effect on the way out comes right after the reversal (1/sqrt(t)).
+  CHECK(windowed - full > 0.5 * (none - full));
+}
+
 TEST_CASE("Harada: quasi-steady lubrication approach U = F eps / (6 pi mu a)", "[harada]")
 {
   // Weight against lubrication only. The approach decays exponentially (rate F / (6 pi mu a^2)),

@@ -6,7 +6,8 @@
 //   drag            -3 pi mu d (1 + 0.15 Re^0.687) v                 (Schiller & Naumann)
 //   lubrication     -6 pi mu a v / eps  down to the roughness gap eps_col, zero in contact
 //   added mass      -(m' dv/dt + (1/2) (dm'/dt) v),  m' = (2/3) pi rho a^3 C(eps) (image series)
-//   history         -6 a^2 sqrt(pi rho mu) int_0^t v'(s) / sqrt(t - s) ds  (Basset, from rest)
+//   history         -6 a^2 sqrt(pi rho mu) int_0^t v'(s) / sqrt(t - s) ds  (Basset, from rest);
+//                   optionally left out from a contact until the gap opens past historyWindow
 //   contact         k_n delta - gamma_n v while delta = h_col - h > 0 (linear spring-dashpot,
 //                   docs/particles.md, m* = m, roughness gap h_col)
 // Each term can be switched off. Time stepping: semi-implicit Euler with fixed dt; every term
@@ -33,6 +34,10 @@ struct HaradaParams {
   double contactTime = 2.5e-3;     // t_c [s]
   double roughness = 2e-4;         // roughness gap h_col as a fraction of the diameter
   double dt = 5e-5;                // [s]
+  // Gap [m] up to which the history force is left out from a contact on the way out (0: never): a
+  // resolved run that excludes its hydrodynamic force over such a window (docs/collisions.md) also
+  // loses the history force there; the velocity history itself is still recorded.
+  double historyWindow = 0;
 };
 
 // Force terms along y at the last step [N]; the hydrodynamic force is all but weight and contact.
@@ -64,6 +69,7 @@ private:
   double time_ = 0, y_, v_;
   BassetHistory basset_;
   HaradaForces forces_;
+  bool inHistoryWindow_ = false;
 };
 
 } // namespace vp
