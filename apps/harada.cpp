@@ -54,7 +54,8 @@ Run readOptions()
   m.imageSeries = o.flag("-harada_image_series", m.imageSeries, "Wall (image series) correction of the added mass");
   m.history = o.flag("-harada_history", m.history, "Basset history force");
   m.historyWindow = o.real("-harada_history_window", m.historyWindow,
-                           "Gap (m) up to which the history force is left out from a contact on the way out (0: never)");
+                           "Gap (m) up to which the history force is left out from a contact on the way out, or until the "
+                           "sphere turns back (below the roughness gap: during the contact only; 0: never)");
   m.contact = o.flag("-harada_contact", m.contact, "Spring-dashpot contact with the wall");
   m.dt = o.real("-time_dt", m.dt, "Time step (s); at most t_c/30 with contact");
   r.timeFinal = o.real("-time_final", r.timeFinal, "End time (s)");
@@ -88,6 +89,8 @@ void validate(Run& r)
     failOption("-time_dt", "must be <= -contact_tc / 30 = " + formatNumber(m.contactTime / 30) + " to resolve the contact, got " + formatNumber(m.dt));
   if (!(m.historyWindow >= 0) || !std::isfinite(m.historyWindow))
     failOption("-harada_history_window", "must be >= 0 (m; 0: never), got " + formatNumber(m.historyWindow));
+  if (m.historyWindow > 0 && !(m.history && m.contact))
+    failOption("-harada_history_window", "needs -harada_history and -harada_contact (it opens at a contact)");
   if (r.outputEvery < 1) failOption("-output_every", "must be >= 1, got " + std::to_string(r.outputEvery));
 }
 

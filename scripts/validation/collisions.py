@@ -19,7 +19,8 @@
   harada:      the e(St) set-up in the Harada point-particle model (build/harada: drag, lubrication,
                added mass with its wall images, a real contact), with and without the Basset history
                force, and with it left out from the contact to a gap of d/16 (the departure's window
-               at d/dx 16): what the history of the boundary layer takes from a rebound, and where
+               at d/dx 16): what the history of the boundary layer takes from a rebound, and where it
+               takes it
 usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)

@@ -54,9 +54,9 @@ void getInto(const char*& p, T& v)
   if constexpr (std::is_same_v<T, ContactHistory>) {
     v.resize(get<std::uint32_t>(p));
     for (ContactSpring& c : v) {
-      c.partner = get<std::int64_t>(p);
-      c.spring = get<Vec3>(p);
-      c.departure = get<std::uint8_t>(p);
+      c.partner = get<decltype(c.partner)>(p);
+      c.spring = get<decltype(c.spring)>(p);
+      c.departure = get<decltype(c.departure)>(p);
     }
   } else {
     v = get<T>(p);

@@ -210,4 +210,6 @@ TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[
   INFO("snapshot:" << badSnapshot);
   CHECK(allRanks(comm, badSnapshot.empty()));
   for (int k = 0; k < 5; ++k) VecDestroy(vecs[k]);
+  MPI_Barrier(comm);
+  if (rank == 0) std::filesystem::remove_all(dir);  // the test's files, wherever it runs
 }

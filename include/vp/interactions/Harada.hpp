@@ -34,9 +34,10 @@ struct HaradaParams {
   double contactTime = 2.5e-3;     // t_c [s]
   double roughness = 2e-4;         // roughness gap h_col as a fraction of the diameter
   double dt = 5e-5;                // [s]
-  // Gap [m] up to which the history force is left out from a contact on the way out (0: never): a
-  // resolved run that excludes its hydrodynamic force over such a window (docs/collisions.md) also
-  // loses the history force there; the velocity history itself is still recorded.
+  // Gap [m] up to which the history force is left out from a contact on the way out, or until the
+  // sphere turns back (0: never; below the roughness gap: the contact only): a resolved run that
+  // excludes its hydrodynamic force over such a window (docs/collisions.md) also loses the history
+  // force there; the velocity history itself is still recorded. Needs history and contact.
   double historyWindow = 0;
 };
 
