@@ -166,8 +166,8 @@ GLASS_ST = [100, 300, 500, 1000]
 ROUGH_GONDRET = ["-contact_roughness", 5e-5]
 
 
-def restitution():
-    fig, ax = plt.subplots(figsize=(9, 4.2))
+def restitution_axes(ax):
+    """The experiments' curve, its pass band and rigid-sphere lubrication theory on e/e_dry-St axes."""
     s = [10 ** (k / 50) for k in range(0, 151)]
     ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
@@ -177,6 +177,11 @@ def restitution():
     L = brenner_integral(4e-4, 0.2)
     ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
                 label="lubrication theory, rigid sphere (L = %.2f)" % L)
+
+
+def restitution():
+    fig, ax = plt.subplots(figsize=(9, 4.2))
+    restitution_axes(ax)
     failures = []
     steel = (STEEL, RHO_F)
     sets = ((HYDRO, [], "s", ST_LIST, steel), ("keep", NO_DEPARTURE, "o", [40, 152, 500], steel),  # (the departure needs limit)
@@ -249,13 +254,7 @@ def harada_run(st, history, window=0.0):
 
 def harada():
     fig, ax = plt.subplots(figsize=(8, 4))
-    s = [10 ** (k / 50) for k in range(0, 151)]
-    ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
-    ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
-                    color="0.85", label="pass band +-0.1 (St 20-1000)")
-    L = brenner_integral(4e-4, 0.2)
-    ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
-                label="lubrication theory, rigid sphere (L = %.2f)" % L)
+    restitution_axes(ax)
     window = D3 / 16  # the departure's window at d/dx 16: one cell
     for history, win, mark in ((True, 0.0, "o"), (True, window, "s"), (False, 0.0, "x")):
         name = "off" if not history else "on, left out from the contact to d/16" if win else "on"
