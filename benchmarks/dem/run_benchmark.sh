@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # DEM throughput and runout: vpsolve -fluid_off against LAMMPS (gran/hooke/history) on the shared
-# dry column collapse (../shared/benchmarks/dem: data, collapse.lmp, front.py, used as they are),
+# dry column collapse (the shared benchmark of README.md: data, collapse.lmp, front.py, used as they are; CASE_DIR),
 # both codes back to back for each N and rank count, since the machine's speed drifts.
 # usage: benchmarks/dem/run_benchmark.sh [N ...]        (default: 2000 10000 50000)
 # env:   STEPS (20000), RANKS ("1 2"), CASE_DIR (shared case), WORK (a scratch directory)
