@@ -45,6 +45,17 @@ int particleColumnCount()
 const std::string kParticleColumns = particleColumns();
 const int kParticleCols = particleColumnCount();
 constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent before 2026-11-26)
+// id, then the Basset modes' x, y, z by mode; rows only for particles that have them (the dataset is
+// absent before 2026-11-26: none had).
+constexpr int kWindowCols = 1 + 3 * kBassetModes;
+const char* const kWindowDataset = "window_history";
+
+bool hasWindowHistory(const ParticleRecord& r)
+{
+  for (const Vec3& z : r.windowHistory)
+    if (z.x != 0 || z.y != 0 || z.z != 0) return true;
+  return false;
+}
 
 void pack(const ParticleRecord& r, double* o)
 {
@@ -150,9 +161,13 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   VP_CALL(PetscViewerHDF5GetFileId(viewer, &file));
 
   // Particles and their springs: one block of rows per rank.
-  std::vector<double> rows(kParticleCols * owned.size()), contacts;
+  std::vector<double> rows(kParticleCols * owned.size()), contacts, windows;
   for (std::size_t i = 0; i < owned.size(); ++i) {
     pack(owned[i], &rows[kParticleCols * i]);
+    if (hasWindowHistory(owned[i])) {
+      windows.push_back(double(owned[i].id));
+      for (const Vec3& z : owned[i].windowHistory) windows.insert(windows.end(), {z.x, z.y, z.z});
+    }
     for (const ContactSpring& c : owned[i].history)
       for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z, double(c.departure)})
         contacts.push_back(v);
@@ -169,6 +184,7 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   };
   table("particles", rows, kParticleCols);
   table("contacts", contacts, kContactCols);
+  table(kWindowDataset, windows, kWindowCols);
   // The snapshot lists are the same on every rank: rank 0 writes them.
   const std::vector<double> none;
   table("field_snapshots", rank == 0 ? run.fieldSnapshots : none, 2);
@@ -228,7 +244,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   int rank;
   MPI_Comm_rank(comm, &rank);
   std::string error;
-  std::vector<double> header, rows, contacts, fieldSnaps, particleSnaps;
+  std::vector<double> header, rows, contacts, windows, fieldSnaps, particleSnaps;
   int contactCols = kContactCols;
   double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
@@ -291,6 +307,11 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       else if (data == &contacts && r > 0 && c == kContactCols - 1) contactCols = kContactCols - 1;  // before the departure state
       else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
+    if (error.empty() && H5Lexists(file, kWindowDataset, H5P_DEFAULT) > 0) {
+      const std::string e = h5::readTable(file, kWindowDataset, windows, r, c);
+      if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
+      else if (r > 0 && c != kWindowCols) error = "'" + path + "' dataset " + kWindowDataset + " has " + std::to_string(c) + " columns, expected " + std::to_string(kWindowCols);
+    }
     // Older checkpoints lack these: their set-up is not compared, their floor restarts from the state.
     if (error.empty()) h5::readAttribute(file, "setup_options", setup_);
     if (error.empty()) h5::readAttribute(file, "penalization_floor", &floor, 1);
@@ -299,7 +320,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   broadcast(comm, error);
   if (!error.empty()) failOption("-restart", error);
   broadcast(comm, setup_);
-  for (std::vector<double>* v : {&header, &rows, &contacts, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
+  for (std::vector<double>* v : {&header, &rows, &contacts, &windows, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
   MPI_Bcast(&floor, 1, MPI_DOUBLE, 0, comm);
   unpackRun(header, run_);
   run_.penalizationFloor = floor;
@@ -319,6 +340,12 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       failOption("-restart", "'" + path + "' has a contact with an invalid departure state (damaged checkpoint)");
     particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]},
                                              static_cast<std::uint8_t>(departure)});
+  }
+  for (std::size_t k = 0; k + kWindowCols <= windows.size(); k += kWindowCols) {
+    const auto it = index.find(static_cast<std::int64_t>(windows[k]));
+    if (it == index.end()) failOption("-restart", "'" + path + "' has a window history of an unknown particle (damaged checkpoint)");
+    for (int m = 0; m < kBassetModes; ++m)
+      particles_[it->second].windowHistory[m] = Vec3{windows[k + 1 + 3 * m], windows[k + 2 + 3 * m], windows[k + 3 + 3 * m]};
   }
 }
 

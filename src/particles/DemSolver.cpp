@@ -31,6 +31,8 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
     gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off), drag_(pc.implicitDrag),
     resolvedInContact_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro)
 {
+  windowHistory_ = resolvedInContact_ != ContactHydro::Keep && pc.contact.hydroHistory;
+  bassetScale_ = 6 * std::sqrt(M_PI * rhoFluid_ * mu_);
   for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
     // Periodic faces are pushed to infinity for the quick wall-proximity test.
@@ -73,6 +75,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
                              : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
   for (std::size_t i = 0; i < store_.nOwned; ++i) {
     store_.flags[i] &= ~stale;
+    if (!windowHistory_) store_.windowHistory[i] = BassetModes{};
     if (departureGap_ == 0)
       for (ContactSpring& c : store_.history[i]) c.departure = 0;
   }
@@ -357,6 +360,7 @@ void DemSolver::substep(double dt)
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
     if (Hydro) relax(i, half, s.vHalf[i], s.wHalf[i]);
+    if (Hydro) recordWindowHistory(i, dv);
     s.x[i] += dt * s.vHalf[i];  // a fixed particle moves with its prescribed, constant velocity
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
@@ -372,7 +376,9 @@ void DemSolver::substep(double dt)
   computeForces(dt);
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    s.v[i] = s.vHalf[i] + (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
+    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
+    s.v[i] = s.vHalf[i] + dv;
+    if (Hydro) recordWindowHistory(i, dv);
     s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
     if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
@@ -482,6 +488,7 @@ void DemSolver::advance(double, double dt)
       store_.wSeen[i] = store_.w[i];
     }
   const double dtp = dt / pc_.substeps;
+  if (windowHistory_) halfKickKernel_ = BassetKernel(0.5 * dtp);
   lubWatch_ = lubWatch_ || dtp > lubStableSubstep_;
   for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
   if (lubWatch_) checkLubricationSeen(dtp);

@@ -38,15 +38,17 @@ TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, mo
   CHECK(closing < 0.5 * 0.02);
 }
 
-TEST_CASE("Pair departure across ranks (-contact_hydro_departure): bitwise one-rank result", "[mpi][lub]")
+TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bitwise one-rank result", "[mpi][lub]")
 {
   // A coupled run's DEM without its fluid (resolved force zero, no gravity): two spheres collide on a
-  // rank boundary and leave each other with the departure; its state lives in both owners' lists.
+  // rank boundary and leave each other with the departure; its state lives in both owners' lists,
+  // the history force's modes with each sphere.
   Config c = boxConfig({0, 0, 0}, {0.04, 0.01, 0.01}, {40, 4, 4});
   c.fluid.off = false;
   c.fluid.mu = 0.005;  // impact St = rho_p u d / (9 mu) = 139: a rebound
   ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 5e-4, LubModel::Blcm, 0.1);
   pc.contact.departureCells = 0.25;  // 0.25 mm; the activation 0.1 a = 0.1 mm
+  pc.contact.hydroHistory = true;
   const double a = 1e-3;
   // On the upper boundary of rank 0's block (the middle with one rank): the pair is split on any count.
   double xc = 0.02;

@@ -119,6 +119,8 @@ vp_bad_input(contact_hydro_departure_range 1 "option -contact_hydro_departure: m
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro_departure 5)
 vp_bad_input(contact_hydro_departure_needs_limit 1 "option -contact_hydro_departure: needs -contact_hydro limit \\(given: keep\\)"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro keep -contact_hydro_departure 1)
+vp_bad_input(contact_hydro_history_needs_exclusion 1 "option -contact_hydro_history: needs -contact_hydro exclude or limit"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro keep -contact_hydro_history 1)
 vp_bad_input(contact_hydro_departure_needs_lubrication 1 "option -contact_hydro_departure: needs -lub_model blcm or llcm"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/good.csv -contact_hydro_departure 1)
 vp_bad_input(contact_restitution_t 1 "option -contact_restitution_t: must be in \\(0, 1\\] \\(0: not set\\), got 2"

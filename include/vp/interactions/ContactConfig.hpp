@@ -31,6 +31,10 @@ struct ContactConfig {
   // excluded, and gets the lubrication correction from this gap, until its gap exceeds this many grid
   // cells (0: off).
   double departureCells = 0;
+  // While the resolved force is excluded (exclude, limit, the departure): the Basset history force of
+  // the particle's velocity changes since the exclusion began stands in for the resolved force's own
+  // (docs/collisions.md).
+  bool hydroHistory = false;
 
   bool stiffnessGiven() const { return tc > 0 || tcSteps > 0 || kn > 0; }
   // Throws InputError naming the option and the valid range.

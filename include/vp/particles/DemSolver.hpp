@@ -5,6 +5,7 @@
 // diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step and fhyd/thyd are ignored.
 #include "vp/core/Config.hpp"
 #include "vp/grid/Grid.hpp"
+#include "vp/interactions/BassetModes.hpp"
 #include "vp/interactions/ContactModel.hpp"
 #include "vp/particles/CellBuckets.hpp"
 #include "vp/particles/Exchange.hpp"
@@ -81,11 +82,24 @@ private:
   // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
   bool excludesResolvedForce(std::size_t i, double overlap, double kn) const;
   // The resolved force and torque particle i feels: without the dynamic part while excluded
-  // (the buoyancy, which the fluid's pressure does not carry, stays).
+  // (the buoyancy, which the fluid's pressure does not carry, stays; with -contact_hydro_history
+  // the Basset force -6 a^2 sqrt(pi rho mu) I of the velocity changes since the exclusion began).
   Vec3 resolvedForce(std::size_t i) const
   {
     const ParticleStore& s = store_;
-    return resolvedOff(i) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
+    if (!resolvedOff(i)) return s.fhyd[i];
+    const Vec3 buoyancy = (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_;
+    return windowHistory_ ? buoyancy - (bassetScale_ * s.radius[i] * s.radius[i]) * BassetKernel::integral(s.windowHistory[i]) : buoyancy;
+  }
+  // After a half kick dv of particle i: its history modes take dv while the resolved force is
+  // excluded, and are cleared once it is not.
+  void recordWindowHistory(std::size_t i, const Vec3& dv)
+  {
+    if (!windowHistory_) return;
+    if (resolvedOff(i))
+      halfKickKernel_.advance(store_.windowHistory[i], dv);
+    else
+      store_.windowHistory[i] = BassetModes{};
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
   bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting | kPairDeparting); }
@@ -112,6 +126,9 @@ private:
   double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
   double lubGap_ = 0;      // largest activation or departure gap [m]
   double departureGap_ = 0;  // -contact_hydro_departure in metres (0: off)
+  bool windowHistory_ = false;   // -contact_hydro_history
+  double bassetScale_ = 0;       // 6 sqrt(pi rho mu): the Basset force is -bassetScale a^2 I
+  BassetKernel halfKickKernel_;  // the modes' factors for half a DEM sub-step
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
   double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]

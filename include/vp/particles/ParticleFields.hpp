@@ -13,6 +13,7 @@
 // Derived fields (mass, inverse mass and inertia, xRebuild, wallTouch) are not listed: append()
 // computes them from the listed ones.
 #include "vp/core/Vec3.hpp"
+#include "vp/interactions/BassetModes.hpp"
 #include "vp/interactions/ContactHistory.hpp"
 #include "vp/particles/Quaternion.hpp"
 #include <array>
@@ -56,6 +57,9 @@ struct ParticleFieldInfo {
   /* velocity and spin the fluid step saw: the implicit drag's anchor (DemSolver::relax) */                           \
   X(Vec3, vSeen, "", "", kMigrate)                                                                                    \
   X(Vec3, wSeen, "", "", kMigrate)                                                                                    \
+  /* Basset history of the velocity changes while the resolved force is excluded (DemSolver; zero  */                \
+  /* outside; their own checkpoint dataset, rows of the particles that have them)                */                \
+  X(BassetModes, windowHistory, "", "", kMigrate)                                                                     \
   /* springs against other particles (variable length: their own checkpoint dataset) */                               \
   X(ContactHistory, history, "", "", kMigrate)
 
