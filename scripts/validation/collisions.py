@@ -22,15 +22,15 @@
                at d/dx 16): what the history of the boundary layer takes from a rebound, and where it
                takes it
 usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
-                     [--cases-only] [--roughness] [--no-departure] [--history] [--short]
+                     [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
   --no-departure: restitution with the cases' set-up (-contact_hydro_departure 1), the same without it
                (-contact_hydro_departure 0), and a glass sphere in water (St 100-1000) both ways; the other
                wet studies without it (their runs and figures named ..._nodeparture)
-  --history: restitution with the cases' set-up and the same with -contact_hydro_history 1 (the Basset
-               history force while the resolved force is excluded), steel and glass in water
+  --no-history: restitution with the cases' set-up (-contact_hydro_history 1: the Basset history force
+               while the resolved force is excluded) and the same without it, steel and glass in water
   --short: timestep also with the short contact
   --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
 import csv, math, os, subprocess, sys
@@ -131,6 +131,8 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
+    if hydro == "keep":
+        extra = list(extra) + NO_HISTORY  # the case's history force needs the resolved force excluded
     others = [str(o) for o in extra if o not in PLAIN]  # the run's options beyond the plain projection
     tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
     tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
@@ -161,7 +163,9 @@ PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
 NO_DEPARTURE = ["-contact_hydro_departure", 0]
 WITHOUT = NO_DEPARTURE if "--no-departure" in sys.argv else []
 SUFFIX = "_nodeparture" if WITHOUT else ""
-HISTORY = ["-contact_hydro_history", 1]
+# The cases replace the excluded resolved force by the Basset history force (-contact_hydro_history 1);
+# --no-history measures e(St) without it, and keep (which carries its own) runs without it.
+NO_HISTORY = ["-contact_hydro_history", 0]
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
@@ -196,12 +200,12 @@ def restitution():
     if WITHOUT:  # the cases' set-up with and without the departure, steel and glass in water
         sets = (sets[0], (HYDRO, WITHOUT, "v", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, WITHOUT, "<", GLASS_ST, (GLASS, WATER)))
-    if "--history" in sys.argv:  # the cases' set-up without and with the history force, steel and glass in water
-        sets = (sets[0], (HYDRO, HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
-                (HYDRO, HISTORY, "<", GLASS_ST, (GLASS, WATER)))
+    if "--no-history" in sys.argv:  # the cases' set-up with and without the history force, steel and glass in water
+        sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
+                (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
     for hydro, extra, mark, st_list, (rho_p, rho_f) in sets:
         name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
-                        ", history force" if extra == HISTORY else
+                        ", no history force" if extra == NO_HISTORY else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
                         ", departure 1 cell" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
@@ -216,7 +220,7 @@ def restitution():
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
             print("restitution: -contact_hydro %-24s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
                   "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
-            out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], NO_DEPARTURE, HISTORY) else None
+            out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], NO_DEPARTURE, NO_HISTORY) else None
             if out:
                 print("restitution: departure at nominal St %4g: %.3f m/s at gap %.3f d (the first step out of contact), "
                       "%.3f at 0.1 d: loss %.3f (lubrication theory %.3f); resolved force's impulse %+.3f m/s" %
@@ -227,13 +231,13 @@ def restitution():
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
     ax.set_ylabel("e / e_dry")
     ax.set_title("Restitution of a sphere on a wall (steel in the cases' liquid%s), d/dx = %d" %
-                 (", glass in water" if WITHOUT or "--history" in sys.argv else "", res), fontsize=9)
+                 (", glass in water" if WITHOUT or "--no-history" in sys.argv else "", res), fontsize=9)
     print("restitution: -contact_hydro %s: %s" % (HYDRO, "all in the band (St 20-1000)" if not failures else
                                                  "outside the band at nominal St %s" % failures), flush=True)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
-    name = "restitution_departure.png" if WITHOUT else "restitution_history.png" if "--history" in sys.argv else "restitution_stokes.png"
+    name = "restitution_departure.png" if WITHOUT else "restitution_history.png" if "--no-history" in sys.argv else "restitution_stokes.png"
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
 

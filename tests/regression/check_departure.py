@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The departure after an impact (`-contact_hydro_departure`, docs/collisions.md), d/dx 8, the cases'
-set-up otherwise. A steel sphere at impact St 27: from the first fluid step out of contact to the
+set-up otherwise but without the history force (`-contact_hydro_history 0`: the departure's own
+effect; the history force has its own tests). A steel sphere at impact St 27: from the first fluid step out of contact to the
 gap 0.1 d it loses what rigid-sphere lubrication theory gives over the same gaps (measured: 0.029
 against 0.035 m/s; without the departure 0.058, the mask's sub-cell gap holding it). A glass sphere
 in water at impact St 261: e/e_dry 0.818 with it (exp(-35/St) 0.875), 0.519 without. Pass: the
@@ -10,7 +11,7 @@ import math, sys
 from study import collisions
 
 c = collisions(np=2)
-DEP = ["-contact_hydro_departure", 1]
+DEP = ["-contact_hydro_departure", 1] + c.NO_HISTORY
 
 st, e, u_in, rows = c.restitution_run(40, c.HYDRO, r=8, extra=DEP, label="test_departure_steel")
 leaving_gap, leaving, at_gap, impulse, theory = c.departure(rows, c.D3 / 2, c.study_mu(40))
@@ -18,7 +19,7 @@ steel_ok = abs((leaving - at_gap) / theory - 1) <= 0.25
 print("steel, impact St %.1f: loss %.4f m/s from %.3f d to 0.1 d, lubrication theory %.4f" % (st, leaving - at_gap, leaving_gap, theory))
 
 glass = {}
-for name, extra in (("with", DEP), ("without", ["-contact_hydro_departure", 0])):
+for name, extra in (("with", DEP), ("without", ["-contact_hydro_departure", 0] + c.NO_HISTORY)):
     st, e, u_in, rows = c.restitution_run(500, c.HYDRO, r=8, extra=extra, rho_p=2500, rho_f=1000, label="test_departure_glass_" + name)
     glass[name] = e / c.E_DRY - math.exp(-35 / st)
     print("glass in water, %s the departure: impact St %.1f, e/e_dry %.3f, exp(-35/St) %.3f" % (name, st, e / c.E_DRY, math.exp(-35 / st)))
