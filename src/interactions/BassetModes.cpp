@@ -18,12 +18,20 @@ BassetKernel::BassetKernel(double dt)
     const double r = dt / tau(m);
     decay_[m] = std::exp(-r);
     gain_[m] = r > 1e-8 ? -std::expm1(-r) / r : 1 - 0.5 * r;  // (tau/dt)(1 - e^{-dt/tau})
+    newest_ += weight(m) * gain_[m];
   }
 }
 
 void BassetKernel::advance(BassetModes& z, const Vec3& du) const
 {
   for (int m = 0; m < kBassetModes; ++m) z[m] = decay_[m] * z[m] + gain_[m] * du;
+}
+
+Vec3 BassetKernel::lagged(const BassetModes& z) const
+{
+  Vec3 sum;
+  for (int m = 0; m < kBassetModes; ++m) sum += (weight(m) * decay_[m]) * z[m];
+  return sum;
 }
 
 Vec3 BassetKernel::integral(const BassetModes& z)

@@ -355,12 +355,11 @@ void DemSolver::substep(double dt)
   // Fixed particles have zero inverse mass and inertia: their velocities stay as given (a prescribed
   // motion, at rest by default), with no branch.
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
+    const Vec3 dv = Hydro ? halfKick(i, half, s.force[i] + resolvedForce(i)) : (half * s.invMass[i]) * s.force[i];
     const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
     if (Hydro) relax(i, half, s.vHalf[i], s.wHalf[i]);
-    if (Hydro) recordWindowHistory(i, dv);
     s.x[i] += dt * s.vHalf[i];  // a fixed particle moves with its prescribed, constant velocity
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
@@ -376,9 +375,7 @@ void DemSolver::substep(double dt)
   computeForces(dt);
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    const Vec3 dv = (half * s.invMass[i]) * (Hydro ? s.force[i] + resolvedForce(i) : s.force[i]);
-    s.v[i] = s.vHalf[i] + dv;
-    if (Hydro) recordWindowHistory(i, dv);
+    s.v[i] = s.vHalf[i] + (Hydro ? halfKick(i, half, s.force[i] + resolvedForce(i)) : (half * s.invMass[i]) * s.force[i]);
     s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
     if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));

@@ -8,7 +8,8 @@
 // (tests/unit/test_basset_modes.cpp); older velocity changes fade faster than 1/sqrt(t).
 // Mode m holds z_m(t) = int exp(-(t - s) / tau_m) u'(s) ds. A step dt over which u' is constant
 // (BassetHistory's product integration) is exact for each mode:
-//   z_m <- exp(-dt/tau_m) z_m + (tau_m/dt) (1 - exp(-dt/tau_m)) du,      I = sum_m w_m z_m.
+//   z_m <- exp(-dt/tau_m) z_m + (tau_m/dt) (1 - exp(-dt/tau_m)) du,      I = sum_m w_m z_m,
+// so that I at the step's end is lagged(z) + newestWeight() du: an integrator can take du implicitly.
 #include "vp/core/Vec3.hpp"
 #include <array>
 
@@ -23,6 +24,9 @@ public:
 
   // One step of dt whose velocity change du was spread evenly over it.
   void advance(BassetModes& z, const Vec3& du) const;
+  // I at the end of the next step without its own change, and the weight of that change.
+  Vec3 lagged(const BassetModes& z) const;
+  double newestWeight() const { return newest_; }
   // I from the modes [m/s^(1/2)].
   static Vec3 integral(const BassetModes& z);
   // The sum of exponentials at t (the approximation of 1/sqrt(t)).
@@ -30,6 +34,7 @@ public:
 
 private:
   std::array<double, kBassetModes> decay_{}, gain_{};
+  double newest_ = 0;  // sum_m w_m gain_m
 };
 
 } // namespace vp

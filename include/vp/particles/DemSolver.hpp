@@ -82,24 +82,30 @@ private:
   // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
   bool excludesResolvedForce(std::size_t i, double overlap, double kn) const;
   // The resolved force and torque particle i feels: without the dynamic part while excluded
-  // (the buoyancy, which the fluid's pressure does not carry, stays; with -contact_hydro_history
-  // the Basset force -6 a^2 sqrt(pi rho mu) I of the velocity changes since the exclusion began).
+  // (the buoyancy, which the fluid's pressure does not carry, stays).
   Vec3 resolvedForce(std::size_t i) const
   {
     const ParticleStore& s = store_;
-    if (!resolvedOff(i)) return s.fhyd[i];
-    const Vec3 buoyancy = (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_;
-    return windowHistory_ ? buoyancy - (bassetScale_ * s.radius[i] * s.radius[i]) * BassetKernel::integral(s.windowHistory[i]) : buoyancy;
+    return resolvedOff(i) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
   }
-  // After a half kick dv of particle i: its history modes take dv while the resolved force is
-  // excluded, and are cleared once it is not.
-  void recordWindowHistory(std::size_t i, const Vec3& dv)
+  // The velocity change of a half kick of particle i with the force F. While its resolved force is
+  // excluded, with -contact_hydro_history, the Basset force -6 a^2 sqrt(pi rho mu) I of its velocity
+  // changes since then acts too, the kick's own change implicit (explicit, it is unstable once
+  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid); the modes are cleared
+  // once the resolved force acts.
+  Vec3 halfKick(std::size_t i, double half, const Vec3& F)
   {
-    if (!windowHistory_) return;
-    if (resolvedOff(i))
-      halfKickKernel_.advance(store_.windowHistory[i], dv);
-    else
-      store_.windowHistory[i] = BassetModes{};
+    ParticleStore& s = store_;
+    const Vec3 dv = (half * s.invMass[i]) * F;
+    if (!windowHistory_) return dv;
+    if (!resolvedOff(i)) {
+      s.windowHistory[i] = BassetModes{};
+      return dv;
+    }
+    const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i];
+    const Vec3 dvH = (1 / (1 + c * halfKickKernel_.newestWeight())) * (dv - c * halfKickKernel_.lagged(s.windowHistory[i]));
+    halfKickKernel_.advance(s.windowHistory[i], dvH);
+    return dvH;
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
   bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting | kPairDeparting); }
