@@ -17,7 +17,7 @@ BassetKernel::BassetKernel(double dt)
   for (int m = 0; m < kBassetModes; ++m) {
     const double r = dt / tau(m);
     decay_[m] = std::exp(-r);
-    gain_[m] = r > 1e-8 ? -std::expm1(-r) / r : 1 - 0.5 * r;  // (tau/dt)(1 - e^{-dt/tau})
+    gain_[m] = r > 0 ? -std::expm1(-r) / r : 1;  // (tau/dt)(1 - e^{-dt/tau})
     newest_ += weight(m) * gain_[m];
   }
 }

@@ -99,9 +99,11 @@ private:
     const Vec3 dv = (half * s.invMass[i]) * F;
     if (!windowHistory_) return dv;
     if (!resolvedOff(i)) {
-      s.windowHistory[i] = BassetModes{};
+      if (s.flags[i] & kHistoryModes) s.windowHistory[i] = BassetModes{};
+      s.flags[i] &= ~kHistoryModes;
       return dv;
     }
+    s.flags[i] |= kHistoryModes;
     const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i];
     const Vec3 dvH = (1 / (1 + c * halfKickKernel_.newestWeight())) * (dv - c * halfKickKernel_.lagged(s.windowHistory[i]));
     halfKickKernel_.advance(s.windowHistory[i], dvH);

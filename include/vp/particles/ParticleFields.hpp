@@ -8,7 +8,8 @@
 //   kStep       sent to the ghosts every DEM sub-step
 //   kShift      a position: shifted by the periodic image offset when sent to a ghost
 //   kMigrate    sent to a new owner
-//   kCheckpoint a column group of the checkpoint's particle rows (history has its own dataset)
+//   kCheckpoint a column group of the checkpoint's particle rows (history and windowHistory have
+//               their own datasets)
 //   kSnapshot   a dataset of the particle snapshots (particles_<step>.h5, ParaView through XDMF)
 // Derived fields (mass, inverse mass and inertia, xRebuild, wallTouch) are not listed: append()
 // computes them from the listed ones.
