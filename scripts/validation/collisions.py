@@ -207,7 +207,7 @@ def restitution():
         name = hydro + (", plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
                         ", no history force" if extra == NO_HISTORY else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
-                        ", departure 1 cell" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
+                        ", departure 1 cell, history force" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
