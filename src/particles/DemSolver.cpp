@@ -488,7 +488,7 @@ void DemSolver::advance(double, double dt)
       store_.wSeen[i] = store_.w[i];
     }
   const double dtp = dt / pc_.substeps;
-  if (windowHistory_) halfKickKernel_ = BassetKernel(0.5 * dtp);
+  if (windowHistory_) halfKickKernel_.emplace(0.5 * dtp);
   lubWatch_ = lubWatch_ || dtp > lubStableSubstep_;
   for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
   if (lubWatch_) checkLubricationSeen(dtp);

@@ -20,8 +20,7 @@ using BassetModes = std::array<Vec3, kBassetModes>;  // z_m of the three velocit
 
 class BassetKernel {
 public:
-  // The factors of a step dt (the default: a placeholder until the step is known).
-  explicit BassetKernel(double dt = 1);
+  explicit BassetKernel(double dt);  // the factors of a step dt
 
   // One step of dt whose velocity change du was spread evenly over it.
   void advance(BassetModes& z, const Vec3& du) const;

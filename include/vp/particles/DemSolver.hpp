@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace vp {
 
@@ -105,8 +106,9 @@ private:
     }
     s.flags[i] |= kHistoryModes;
     const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i];
-    const Vec3 dvH = (1 / (1 + c * halfKickKernel_.newestWeight())) * (dv - c * halfKickKernel_.lagged(s.windowHistory[i]));
-    halfKickKernel_.advance(s.windowHistory[i], dvH);
+    const BassetKernel& kernel = *halfKickKernel_;  // set by advance() for its sub-step
+    const Vec3 dvH = (1 / (1 + c * kernel.newestWeight())) * (dv - c * kernel.lagged(s.windowHistory[i]));
+    kernel.advance(s.windowHistory[i], dvH);
     return dvH;
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
@@ -136,7 +138,7 @@ private:
   double departureGap_ = 0;  // -contact_hydro_departure in metres (0: off)
   bool windowHistory_ = false;   // -contact_hydro_history
   double bassetScale_ = 0;       // 6 sqrt(pi rho mu): the Basset force is -bassetScale a^2 I
-  BassetKernel halfKickKernel_;  // the modes' factors for half a DEM sub-step
+  std::optional<BassetKernel> halfKickKernel_;  // the modes' factors for half a DEM sub-step
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
   double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]
