@@ -50,13 +50,6 @@ constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure st
 constexpr int kWindowCols = 1 + 3 * kBassetModes;
 const char* const kWindowDataset = "window_history";
 
-bool hasWindowHistory(const ParticleRecord& r)
-{
-  for (const Vec3& z : r.windowHistory)
-    if (z.x != 0 || z.y != 0 || z.z != 0) return true;
-  return false;
-}
-
 void pack(const ParticleRecord& r, double* o)
 {
   forCheckpointFields([&](auto value, const char*) { writeDoubles(r.*value, o); });
@@ -164,9 +157,9 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   std::vector<double> rows(kParticleCols * owned.size()), contacts, windows;
   for (std::size_t i = 0; i < owned.size(); ++i) {
     pack(owned[i], &rows[kParticleCols * i]);
-    if (hasWindowHistory(owned[i])) {
+    for (const BassetModes& modes : owned[i].windowHistory) {
       windows.push_back(double(owned[i].id));
-      for (const Vec3& z : owned[i].windowHistory) windows.insert(windows.end(), {z.x, z.y, z.z});
+      for (const Vec3& z : modes) windows.insert(windows.end(), {z.x, z.y, z.z});
     }
     for (const ContactSpring& c : owned[i].history)
       for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z, double(c.departure)})
@@ -343,9 +336,10 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   }
   for (std::size_t k = 0; k + kWindowCols <= windows.size(); k += kWindowCols) {
     const auto it = index.find(static_cast<std::int64_t>(windows[k]));
-    if (it == index.end()) failOption("-restart", "'" + path + "' has a window history of an unknown particle (damaged checkpoint)");
-    for (int m = 0; m < kBassetModes; ++m)
-      particles_[it->second].windowHistory[m] = Vec3{windows[k + 1 + 3 * m], windows[k + 2 + 3 * m], windows[k + 3 + 3 * m]};
+    if (it == index.end() || !particles_[it->second].windowHistory.empty())
+      failOption("-restart", "'" + path + "' has a window history of an unknown particle, or two of one (damaged checkpoint)");
+    BassetModes& z = particles_[it->second].windowHistory.emplace_back();
+    for (int m = 0; m < kBassetModes; ++m) z[m] = Vec3{windows[k + 1 + 3 * m], windows[k + 2 + 3 * m], windows[k + 3 + 3 * m]};
   }
 }
 

@@ -75,10 +75,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
                              : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
   for (std::size_t i = 0; i < store_.nOwned; ++i) {
     store_.flags[i] &= ~stale;
-    if (!windowHistory_) {
-      store_.windowHistory[i] = BassetModes{};
-      store_.flags[i] &= ~kHistoryModes;
-    }
+    if (!windowHistory_) store_.windowHistory[i] = WindowModes{};
     if (departureGap_ == 0)
       for (ContactSpring& c : store_.history[i]) c.departure = 0;
   }

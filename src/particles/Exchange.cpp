@@ -48,10 +48,20 @@ void put(std::vector<char>& b, const ContactHistory& h)
   }
 }
 
+// The window's Basset modes: a count (0 or 1), then the modes.
+void put(std::vector<char>& b, const WindowModes& w)
+{
+  put(b, static_cast<std::uint32_t>(w.size()));
+  for (const BassetModes& z : w) put(b, z);
+}
+
 template <class T>
 void getInto(const char*& p, T& v)
 {
-  if constexpr (std::is_same_v<T, ContactHistory>) {
+  if constexpr (std::is_same_v<T, WindowModes>) {
+    v.resize(get<std::uint32_t>(p));
+    for (BassetModes& z : v) z = get<BassetModes>(p);
+  } else if constexpr (std::is_same_v<T, ContactHistory>) {
     v.resize(get<std::uint32_t>(p));
     for (ContactSpring& c : v) {
       c.partner = get<decltype(c.partner)>(p);

@@ -71,7 +71,8 @@ TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bit
       dem.advance(k * dt, dt);
       const ParticleStore& s = dem.particles();  // departing, with the history force acting
       for (std::size_t i = 0; i < s.nOwned; ++i)
-        local = local || ((s.flags[i] & kPairDeparting) && BassetKernel::integral(s.windowHistory[i]).x != 0);
+        local = local || ((s.flags[i] & kPairDeparting) && !s.windowHistory[i].empty() &&
+                          BassetKernel::integral(s.windowHistory[i].front()).x != 0);
     }
     MPI_Allreduce(&local, &departed, 1, MPI_INT, MPI_LOR, comm);
     return gatherState(comm, dem.particles());

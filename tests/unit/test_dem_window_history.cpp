@@ -46,8 +46,7 @@ Impact impact(bool history, double dt, int steps)
     out.vz.push_back(s.v[0].z);
     const bool off = s.flags[0] & kResolvedForceOff;
     out.excluded.push_back(off);
-    if (!off)
-      for (const Vec3& z : s.windowHistory[0]) out.modesCleared = out.modesCleared && z.x == 0 && z.y == 0 && z.z == 0;
+    if (!off) out.modesCleared = out.modesCleared && s.windowHistory[0].empty();
   }
   REQUIRE(s.wallTouch[0] == 0);  // released, in free flight
   out.energy = s.mass[0] * (0.5 * dot(s.v[0], s.v[0]) + (1 - kRho / kSteel) * kG * s.x[0].z);

@@ -92,23 +92,24 @@ private:
   // The velocity change of a half kick of particle i with the force F. While its resolved force is
   // excluded, with -contact_hydro_history, the Basset force -6 a^2 sqrt(pi rho mu) I of its velocity
   // changes since then acts too, the kick's own change implicit (explicit, it is unstable once
-  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid); the modes are cleared
-  // once the resolved force acts.
+  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid); the modes are dropped
+  // (their storage freed) once the resolved force acts.
   Vec3 halfKick(std::size_t i, double half, const Vec3& F)
   {
     ParticleStore& s = store_;
     const Vec3 dv = (half * s.invMass[i]) * F;
     if (!windowHistory_) return dv;
+    WindowModes& window = s.windowHistory[i];
     if (!resolvedOff(i)) {
-      if (s.flags[i] & kHistoryModes) s.windowHistory[i] = BassetModes{};
-      s.flags[i] &= ~kHistoryModes;
+      if (!window.empty()) window = WindowModes{};
       return dv;
     }
-    s.flags[i] |= kHistoryModes;
+    if (window.empty()) window.resize(1);
+    BassetModes& z = window.front();
     const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i];
     const BassetKernel& kernel = *halfKickKernel_;  // set by advance() for its sub-step
-    const Vec3 dvH = (1 / (1 + c * kernel.newestWeight())) * (dv - c * kernel.lagged(s.windowHistory[i]));
-    kernel.advance(s.windowHistory[i], dvH);
+    const Vec3 dvH = (1 / (1 + c * kernel.newestWeight())) * (dv - c * kernel.lagged(z));
+    kernel.advance(z, dvH);
     return dvH;
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }

@@ -20,10 +20,14 @@
 #include <array>
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 
 namespace vp {
 
 using WallSprings = std::array<Vec3, 6>;  // tangential springs against the six walls
+// The Basset modes of a particle inside an exclusion window (DemSolver::halfKick), one entry there
+// and none elsewhere: a particle outside a window carries an empty vector, not 42 numbers.
+using WindowModes = std::vector<BassetModes>;
 
 enum ParticleSync : unsigned { kCreate = 1, kStep = 2, kShift = 4, kMigrate = 8, kCheckpoint = 16, kSnapshot = 32 };
 
@@ -58,9 +62,9 @@ struct ParticleFieldInfo {
   /* velocity and spin the fluid step saw: the implicit drag's anchor (DemSolver::relax) */                           \
   X(Vec3, vSeen, "", "", kMigrate)                                                                                    \
   X(Vec3, wSeen, "", "", kMigrate)                                                                                    \
-  /* Basset history of the velocity changes while the resolved force is excluded (DemSolver; zero  */                \
-  /* outside; their own checkpoint dataset, rows of the particles that have them)                */                \
-  X(BassetModes, windowHistory, "", "", kMigrate)                                                                     \
+  /* Basset history of the velocity changes while the resolved force is excluded (DemSolver; empty */                 \
+  /* outside; their own checkpoint dataset, rows of the particles that have them)                 */                  \
+  X(WindowModes, windowHistory, "", "", kMigrate)                                                                     \
   /* springs against other particles (variable length: their own checkpoint dataset) */                               \
   X(ContactHistory, history, "", "", kMigrate)
 
