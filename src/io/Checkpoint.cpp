@@ -17,7 +17,10 @@ namespace vp {
 namespace {
 
 const char* const kFormat = "vpsolve checkpoint";
-constexpr int kVersion = 1;
+// Version 2 (2026-11-26) adds what version 1 readers would drop without a word: the contacts'
+// departure column and the window_history dataset. Version 1 reads as without both.
+constexpr int kVersion = 2;
+constexpr int kOldestVersion = 1;
 // One row per particle: the kCheckpoint fields of ParticleFields.hpp, each as doubles.
 template <class F>
 void forCheckpointFields(F&& f)
@@ -253,8 +256,9 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     header.resize(6);
     if (error.empty() && (!h5::readAttribute(file, "format", format) || format != kFormat))
       error = "'" + path + "' is not a vpsolve checkpoint (no format attribute '" + kFormat + "')";
-    else if (error.empty() && (!h5::readAttribute(file, "version", &version, 1) || version != kVersion))
-      error = "'" + path + "' is checkpoint version " + std::to_string(version) + ", this vpsolve reads version " + std::to_string(kVersion);
+    else if (error.empty() && (!h5::readAttribute(file, "version", &version, 1) || version < kOldestVersion || version > kVersion))
+      error = "'" + path + "' is checkpoint version " + std::to_string(version) + ", this vpsolve reads versions " +
+              std::to_string(kOldestVersion) + " to " + std::to_string(kVersion);
     else if (error.empty() && (!h5::readAttribute(file, kRunAttribute, header.data(), 6) || !h5::readAttribute(file, "grid_n", n, 3) ||
                                !h5::readAttribute(file, "grid_lo", lo, 3) || !h5::readAttribute(file, "grid_hi", hi, 3) ||
                                !h5::readAttribute(file, "boundary_types", types, 6)))
