@@ -60,31 +60,44 @@ TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bit
     xc = probe.faceCoord(0, probe.end(0));
     MPI_Bcast(&xc, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
   }
-  const std::vector<ParticleRecord> p = {sphere(1, {xc - a * 1.2, 0.005, 0.005}, a, 7800, {0.2, 0, 0}),
-                                         sphere(2, {xc + a * 1.2, 0.005, 0.005}, a, 7800, {-0.2, 0, 0})};
   const double dt = 2e-6;
-  auto run = [&](MPI_Comm comm, int& departed) {
+  // departed: a sphere was departing with the history force acting; owners: how many ranks owned
+  // sphere 2 while it was in its window (modes non-zero: the contact, then the departure).
+  auto run = [&](MPI_Comm comm, const std::vector<ParticleRecord>& p, int& departed, int& owners) {
     Grid grid(comm, c.grid, c.bc);
     DemSolver dem(grid, c, pc, p);
-    int local = 0;
+    int local = 0, owned2 = 0;
     for (int k = 0; k < 3000; ++k) {
       dem.advance(k * dt, dt);
-      const ParticleStore& s = dem.particles();  // departing, with the history force acting
-      for (std::size_t i = 0; i < s.nOwned; ++i)
-        local = local || ((s.flags[i] & kPairDeparting) && !s.windowHistory[i].empty() &&
-                          BassetKernel::integral(s.windowHistory[i].front()).x != 0);
+      const ParticleStore& s = dem.particles();
+      for (std::size_t i = 0; i < s.nOwned; ++i) {
+        const bool inWindow = (s.flags[i] & kPairDeparting) && !s.windowHistory[i].empty() &&
+                              BassetKernel::integral(s.windowHistory[i].front()).x != 0;
+        local = local || inWindow;
+        owned2 = owned2 || (s.id[i] == 2 && !s.windowHistory[i].empty() && BassetKernel::integral(s.windowHistory[i].front()).x != 0);
+      }
     }
     MPI_Allreduce(&local, &departed, 1, MPI_INT, MPI_LOR, comm);
+    MPI_Allreduce(&owned2, &owners, 1, MPI_INT, MPI_SUM, comm);
     return gatherState(comm, dem.particles());
   };
-  int departedParallel = 0, departedSerial = 0;
-  const std::vector<State> parallel = run(PETSC_COMM_WORLD, departedParallel);
-  const std::vector<State> serial = run(PETSC_COMM_SELF, departedSerial);
-  REQUIRE(parallel.size() == 2);
-  CHECK(departedSerial);
-  CHECK(departedParallel);
-  CHECK(bitwiseEqual(parallel, serial));
-  const double gap = norm(parallel[1].x - parallel[0].x) - 2 * a;
-  INFO("gap " << gap / a << " a, separating at " << parallel[1].v.x - parallel[0].v.x);
-  CHECK(gap > 0.25e-3);  // left the departure gap
+  // Head-on on the boundary (the pair split between two owners), then drifting at 0.05 m/s so that
+  // sphere 2 crosses the boundary inside its window: its modes and the pair's state migrate with it.
+  const std::vector<std::vector<ParticleRecord>> layouts = {
+    {sphere(1, {xc - a * 1.2, 0.005, 0.005}, a, 7800, {0.2, 0, 0}), sphere(2, {xc + a * 1.2, 0.005, 0.005}, a, 7800, {-0.2, 0, 0})},
+    {sphere(1, {xc - a * 2.25, 0.005, 0.005}, a, 7800, {0.25, 0, 0}), sphere(2, {xc + a * 0.15, 0.005, 0.005}, a, 7800, {-0.15, 0, 0})}};
+  for (std::size_t l = 0; l < layouts.size(); ++l) {
+    int departedParallel = 0, departedSerial = 0, ownersParallel = 0, ownersSerial = 0;
+    const std::vector<State> parallel = run(PETSC_COMM_WORLD, layouts[l], departedParallel, ownersParallel);
+    const std::vector<State> serial = run(PETSC_COMM_SELF, layouts[l], departedSerial, ownersSerial);
+    REQUIRE(parallel.size() == 2);
+    const double gap = norm(parallel[1].x - parallel[0].x) - 2 * a;
+    INFO("layout " << l << ": gap " << gap / a << " a, separating at " << parallel[1].v.x - parallel[0].v.x
+                   << ", sphere 2 in its window on " << ownersParallel << " ranks, at x " << parallel[1].x.x - xc << " from the boundary");
+    CHECK(departedSerial);
+    CHECK(departedParallel);
+    CHECK(bitwiseEqual(parallel, serial));
+    CHECK(gap > 0.25e-3);  // left the departure gap
+    if (l == 1 && size > 1) CHECK(ownersParallel == 2);  // changed owner inside its window
+  }
 }
