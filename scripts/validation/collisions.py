@@ -131,8 +131,6 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
-    if hydro == "keep":
-        extra = list(extra) + NO_HISTORY  # the case's history force needs the resolved force excluded
     others = [str(o) for o in extra if o not in PLAIN]  # the run's options beyond the plain projection
     tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
     tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
@@ -158,14 +156,15 @@ def study_cfl(st):
     return 0.25 if st >= 1000 else 0.5
 
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
+# The cases replace the excluded resolved force by the Basset history force (-contact_hydro_history 1)
+# while a sphere departs; --no-history measures e(St) without it.
+NO_HISTORY = ["-contact_hydro_history", 0]
 # The cases leave a wall after an impact with the departure (docs/collisions.md, "The departure after an
-# impact"); --no-departure measures the studies without it (restitution: both ways).
-NO_DEPARTURE = ["-contact_hydro_departure", 0]
+# impact"); --no-departure measures the studies without it (restitution: both ways), and so without
+# the history force, which acts while a sphere departs.
+NO_DEPARTURE = ["-contact_hydro_departure", 0] + NO_HISTORY
 WITHOUT = NO_DEPARTURE if "--no-departure" in sys.argv else []
 SUFFIX = "_nodeparture" if WITHOUT else ""
-# The cases replace the excluded resolved force by the Basset history force (-contact_hydro_history 1);
-# --no-history measures e(St) without it, and keep (which carries its own) runs without it.
-NO_HISTORY = ["-contact_hydro_history", 0]
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
@@ -551,7 +550,7 @@ def pair():
         base = {}
         for dep in (1, 0):
             for f in ((1, 0.5, 2) if st == 40 else (1,)):
-                extra = ["-contact_hydro_departure", dep] + ([] if f == 1 else ["-penalization_lambda", f * lam])
+                extra = (["-contact_hydro_departure", 1] if dep else NO_DEPARTURE) + ([] if f == 1 else ["-penalization_lambda", f * lam])
                 out = pair_run(st, "st%d_dep%d_lam%g" % (st, dep, f), extra)
                 if out is None:
                     print("pair: nominal St %d, departure %d, lambda x%g: no rebound" % (st, dep, f), flush=True)

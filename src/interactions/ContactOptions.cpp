@@ -41,8 +41,8 @@ ContactConfig readContactOptions()
                             "excluded and gets the lubrication correction from this gap, in grid cells, until it is "
                             "that far (0: off; the collision cases use 1; docs/collisions.md)");
   k.hydroHistory = o.flag("-contact_hydro_history", k.hydroHistory,
-                          "With -contact_hydro exclude or limit: while the resolved force is excluded, the Basset history force of the "
-                          "particle's velocity changes since it was excluded acts instead (docs/collisions.md)");
+                          "With -contact_hydro_departure: while the resolved force is excluded, the Basset history force of the "
+                          "particle's velocity changes since it was excluded acts instead, out of contact (docs/collisions.md)");
   return k;
 }
 
@@ -63,8 +63,8 @@ void ContactConfig::validate() const
   if (!(roughness >= 0 && roughness < 0.5)) failOption("-contact_roughness", "must be in [0, 0.5)", roughness);
   if (!(rollingFriction >= 0 && rollingFriction <= 1)) failOption("-contact_rolling_friction", "must be in [0, 1]", rollingFriction);
   if (!(departureCells >= 0 && departureCells <= 4)) failOption("-contact_hydro_departure", "must be in [0, 4] grid cells", departureCells);
-  if (hydroHistory && hydro == ContactHydro::Keep)
-    failOption("-contact_hydro_history", "needs -contact_hydro exclude or limit (with keep the resolved force carries the history force)");
+  if (hydroHistory && !(departureCells > 0))
+    failOption("-contact_hydro_history", "needs -contact_hydro_departure (the force acts out of contact, while a sphere departs)");
   if (departureCells > 0 && hydro != ContactHydro::Limit)
     failOption("-contact_hydro_departure", std::string("needs -contact_hydro limit (given: ") + contactHydroName(hydro) + ")");
 }

@@ -48,9 +48,10 @@ int particleColumnCount()
 const std::string kParticleColumns = particleColumns();
 const int kParticleCols = particleColumnCount();
 constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent before 2026-11-26)
-// id, then the Basset modes' x, y, z by mode; rows only for particles that have them (the dataset is
-// absent before 2026-11-26: none had).
-constexpr int kWindowCols = 1 + 3 * kBassetModes;
+// id, the Basset modes' x, y, z by mode, the velocity change of a contact under way (absent in the
+// dataset's first form: none); rows only for particles in a window (the dataset is absent before
+// 2026-11-26: none were).
+constexpr int kWindowCols = 4 + 3 * kBassetModes;
 const char* const kWindowDataset = "window_history";
 
 void pack(const ParticleRecord& r, double* o)
@@ -160,9 +161,10 @@ void CheckpointWriter::writeFile(const std::string& tmp, const Grid& grid, const
   std::vector<double> rows(kParticleCols * owned.size()), contacts, windows;
   for (std::size_t i = 0; i < owned.size(); ++i) {
     pack(owned[i], &rows[kParticleCols * i]);
-    for (const BassetModes& modes : owned[i].windowHistory) {
+    for (const WindowHistory& h : owned[i].windowHistory) {
       windows.push_back(double(owned[i].id));
-      for (const Vec3& z : modes) windows.insert(windows.end(), {z.x, z.y, z.z});
+      for (const Vec3& z : h.modes) windows.insert(windows.end(), {z.x, z.y, z.z});
+      windows.insert(windows.end(), {h.contactChange.x, h.contactChange.y, h.contactChange.z});
     }
     for (const ContactSpring& c : owned[i].history)
       for (double v : {double(owned[i].id), double(c.partner), c.spring.x, c.spring.y, c.spring.z, double(c.departure)})
@@ -241,7 +243,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   MPI_Comm_rank(comm, &rank);
   std::string error;
   std::vector<double> header, rows, contacts, windows, fieldSnaps, particleSnaps;
-  int contactCols = kContactCols;
+  int contactCols = kContactCols, windowCols = kWindowCols;
   double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
     h5::QuietErrors quiet;
@@ -307,6 +309,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     if (error.empty() && H5Lexists(file, kWindowDataset, H5P_DEFAULT) > 0) {
       const std::string e = h5::readTable(file, kWindowDataset, windows, r, c);
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
+      else if (r > 0 && c == kWindowCols - 3) windowCols = kWindowCols - 3;  // before the contact's change
       else if (r > 0 && c != kWindowCols) error = "'" + path + "' dataset " + kWindowDataset + " has " + std::to_string(c) + " columns, expected " + std::to_string(kWindowCols);
     }
     // Older checkpoints lack these: their set-up is not compared, their floor restarts from the state.
@@ -329,6 +332,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     index[particles_.back().id] = i;
   }
   MPI_Bcast(&contactCols, 1, MPI_INT, 0, comm);
+  MPI_Bcast(&windowCols, 1, MPI_INT, 0, comm);
   for (std::size_t k = 0; k + contactCols <= contacts.size(); k += contactCols) {
     const auto it = index.find(static_cast<std::int64_t>(contacts[k]));
     if (it == index.end()) failOption("-restart", "'" + path + "' has a contact spring of an unknown particle (damaged checkpoint)");
@@ -338,12 +342,14 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     particles_[it->second].history.push_back({static_cast<std::int64_t>(contacts[k + 1]), Vec3{contacts[k + 2], contacts[k + 3], contacts[k + 4]},
                                              static_cast<std::uint8_t>(departure)});
   }
-  for (std::size_t k = 0; k + kWindowCols <= windows.size(); k += kWindowCols) {
+  for (std::size_t k = 0; k + windowCols <= windows.size(); k += windowCols) {
     const auto it = index.find(static_cast<std::int64_t>(windows[k]));
     if (it == index.end() || !particles_[it->second].windowHistory.empty())
       failOption("-restart", "'" + path + "' has a window history of an unknown particle, or two of one (damaged checkpoint)");
-    BassetModes& z = particles_[it->second].windowHistory.emplace_back();
-    for (int m = 0; m < kBassetModes; ++m) z[m] = Vec3{windows[k + 1 + 3 * m], windows[k + 2 + 3 * m], windows[k + 3 + 3 * m]};
+    WindowHistory& h = particles_[it->second].windowHistory.emplace_back();
+    const double* o = &windows[k + 1];
+    for (Vec3& z : h.modes) readDoubles(o, z);
+    if (windowCols == kWindowCols) readDoubles(o, h.contactChange);
   }
 }
 

@@ -71,7 +71,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
   // A checkpoint written with other -contact_hydro options: their flags do not apply here.
-  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting)
+  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching)
                              : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
   for (std::size_t i = 0; i < store_.nOwned; ++i) {
     store_.flags[i] &= ~stale;
@@ -145,7 +145,7 @@ void DemSolver::computeForces(double dt)
   if (resolvedInContact_ != ContactHydro::Keep)
     for (std::size_t i = 0; i < s.size(); ++i) {
       const bool candidate = departureGap_ > 0 && (s.flags[i] & (kWallImpact | kDeparting));
-      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting)) | (candidate ? kDeparting : 0);
+      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching)) | (candidate ? kDeparting : 0);
     }
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
@@ -191,6 +191,10 @@ void DemSolver::computeForces(double dt)
       torqueI = roll - s.radius[i] * lever;
       torqueJ = -roll - s.radius[j] * lever;
       contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
+      if (resolvedInContact_ != ContactHydro::Keep) {
+        s.flags[i] |= kTouching;
+        s.flags[j] |= kTouching;
+      }
       if (excludesResolvedForce(i, reach - r, law.kn)) s.flags[i] |= kResolvedForceOff;
       if (excludesResolvedForce(j, reach - r, law.kn)) s.flags[j] |= kResolvedForceOff;
       if (departureGap_ > 0 && (excludesResolvedForce(i, (reach - r) / 2, law.kn) || excludesResolvedForce(j, (reach - r) / 2, law.kn)))
@@ -261,6 +265,7 @@ void DemSolver::computeForces(double dt)
           T -= dist * cross(n, c.tangential);
           T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, 0, s.invInertia[i], dt);
           ++wallContacts;
+          if (resolvedInContact_ != ContactHydro::Keep) s.flags[i] |= kTouching;
           if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
           if (departureGap_ > 0 && excludesResolvedForce(i, overlap / 2, wallCoef.kn)) s.flags[i] |= kWallImpact;
         }

@@ -48,11 +48,14 @@ void put(std::vector<char>& b, const ContactHistory& h)
   }
 }
 
-// The window's Basset modes: a count (0 or 1), then the modes.
+// The window's history: a count (0 or 1), then its modes and the contact's change.
 void put(std::vector<char>& b, const WindowModes& w)
 {
   put(b, static_cast<std::uint32_t>(w.size()));
-  for (const BassetModes& z : w) put(b, z);
+  for (const WindowHistory& h : w) {
+    put(b, h.modes);
+    put(b, h.contactChange);
+  }
 }
 
 template <class T>
@@ -60,7 +63,10 @@ void getInto(const char*& p, T& v)
 {
   if constexpr (std::is_same_v<T, WindowModes>) {
     v.resize(get<std::uint32_t>(p));
-    for (BassetModes& z : v) z = get<BassetModes>(p);
+    for (WindowHistory& h : v) {
+      h.modes = get<BassetModes>(p);
+      h.contactChange = get<Vec3>(p);
+    }
   } else if constexpr (std::is_same_v<T, ContactHistory>) {
     v.resize(get<std::uint32_t>(p));
     for (ContactSpring& c : v) {

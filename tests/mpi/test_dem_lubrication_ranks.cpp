@@ -72,9 +72,9 @@ TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bit
       const ParticleStore& s = dem.particles();
       for (std::size_t i = 0; i < s.nOwned; ++i) {
         const bool inWindow = (s.flags[i] & kPairDeparting) && !s.windowHistory[i].empty() &&
-                              BassetKernel::integral(s.windowHistory[i].front()).x != 0;
+                              BassetKernel::integral(s.windowHistory[i].front().modes).x != 0;
         local = local || inWindow;
-        owned2 = owned2 || (s.id[i] == 2 && !s.windowHistory[i].empty() && BassetKernel::integral(s.windowHistory[i].front()).x != 0);
+        owned2 = owned2 || (s.id[i] == 2 && !s.windowHistory[i].empty() && BassetKernel::integral(s.windowHistory[i].front().modes).x != 0);
       }
     }
     MPI_Allreduce(&local, &departed, 1, MPI_INT, MPI_LOR, comm);

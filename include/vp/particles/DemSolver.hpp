@@ -92,8 +92,12 @@ private:
   // The velocity change of a half kick of particle i with the force F. While its resolved force is
   // excluded, with -contact_hydro_history, the Basset force -6 a^2 sqrt(pi rho mu) I of its velocity
   // changes since then acts too, the kick's own change implicit (explicit, it is unstable once
-  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid); the modes are dropped
-  // (their storage freed) once the resolved force acts.
+  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid). Not in contact: over a
+  // contact stretched to fluid steps the force would press the sphere into its partner, swelling
+  // the contact's impulse and the friction's, and keep acting on a sphere held at the wall, where
+  // a real contact is over before the force has acted. The contact's velocity change enters the
+  // history as one change when it ends, as that of a real, short contact at that moment. The modes
+  // are dropped (their storage freed) once the resolved force acts.
   Vec3 halfKick(std::size_t i, double half, const Vec3& F)
   {
     ParticleStore& s = store_;
@@ -105,11 +109,17 @@ private:
       return dv;
     }
     if (window.empty()) window.resize(1);
-    BassetModes& z = window.front();
-    const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i];
+    WindowHistory& w = window.front();
     const BassetKernel& kernel = *halfKickKernel_;  // set by advance() for its sub-step
-    const Vec3 dvH = (1 / (1 + c * kernel.newestWeight())) * (dv - c * kernel.lagged(z));
-    kernel.advance(z, dvH);
+    if (s.flags[i] & kTouching) {
+      kernel.advance(w.modes, Vec3{});  // older changes fade meanwhile
+      w.contactChange += dv;
+      return dv;
+    }
+    const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i], nw = kernel.newestWeight();
+    const Vec3 dvH = (1 / (1 + c * nw)) * (dv - c * (kernel.lagged(w.modes) + nw * w.contactChange));
+    kernel.advance(w.modes, dvH + w.contactChange);
+    w.contactChange = Vec3{};
     return dvH;
   }
   Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }

@@ -25,9 +25,14 @@
 namespace vp {
 
 using WallSprings = std::array<Vec3, 6>;  // tangential springs against the six walls
-// The Basset modes of a particle inside an exclusion window (DemSolver::halfKick), one entry there
-// and none elsewhere: a particle outside a window carries an empty vector, not 42 numbers.
-using WindowModes = std::vector<BassetModes>;
+// The history force's state of a particle inside an exclusion window (DemSolver::halfKick): its
+// Basset modes, and the velocity change of a contact under way (recorded in them when it ends).
+struct WindowHistory {
+  BassetModes modes{};
+  Vec3 contactChange;
+};
+// One entry inside a window, none elsewhere: a particle outside a window carries an empty vector.
+using WindowModes = std::vector<WindowHistory>;
 
 enum ParticleSync : unsigned { kCreate = 1, kStep = 2, kShift = 4, kMigrate = 8, kCheckpoint = 16, kSnapshot = 32 };
 

@@ -14,8 +14,11 @@ namespace vp {
 // not a sphere resting on it). kDeparting: leaving a wall after a wall impact, closer than
 // -contact_hydro_departure: the resolved force stays excluded and the lubrication correction acts
 // from that gap (set by the force loop). kPairDeparting: the same, leaving another sphere (the
-// pair's own state lives with the pair list, PairList::departure).
-enum ParticleFlag : std::uint8_t { kFixed = 1, kResolvedForceOff = 2, kDeparting = 4, kWallImpact = 8, kPairDeparting = 16 };
+// pair's own state lives with the pair list, PairList::departure). kTouching: in contact with a
+// wall or another particle (set by the force loop unless -contact_hydro is keep).
+enum ParticleFlag : std::uint8_t {
+  kFixed = 1, kResolvedForceOff = 2, kDeparting = 4, kWallImpact = 8, kPairDeparting = 16, kTouching = 32
+};
 
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
