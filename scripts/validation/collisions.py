@@ -32,7 +32,8 @@ usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confineme
   --no-history: restitution with the cases' set-up (-contact_hydro_history 1: the Basset history force
                while the resolved force is excluded) and the same without it, steel and glass in water
   --short: timestep also with the short contact
-  --reuse: read runs already in /tmp/vp_col_* instead of running them again"""
+  --reuse: read runs already in /tmp/vp_col_* instead of running them again (a run's name comes from
+           its options, not from the code: after a change of the model, remove the runs it touches)"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir
 

@@ -17,8 +17,9 @@ namespace vp {
 namespace {
 
 const char* const kFormat = "vpsolve checkpoint";
-// Version 2 (2026-11-26) adds what version 1 readers would drop without a word: the contacts'
-// departure column and the window_history dataset. Version 1 reads as without both.
+// Version 2 (2026-11-26): the contacts' departure column and the window_history dataset, which a
+// version 1 reader would drop without a word (version 1 files written on 2026-11-26 may have them;
+// they read with what they have), and flag 32 is kTouching (it was the window history's).
 constexpr int kVersion = 2;
 constexpr int kOldestVersion = 1;
 // One row per particle: the kCheckpoint fields of ParticleFields.hpp, each as doubles.
@@ -243,7 +244,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   MPI_Comm_rank(comm, &rank);
   std::string error;
   std::vector<double> header, rows, contacts, windows, fieldSnaps, particleSnaps;
-  int contactCols = kContactCols, windowCols = kWindowCols;
+  int contactCols = kContactCols, windowCols = kWindowCols, version = 0;
   double floor = 0;  // penalization_floor (0: not in the checkpoint)
   if (rank == 0) {
     h5::QuietErrors quiet;
@@ -253,7 +254,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     else if (H5Fis_hdf5(path.c_str()) <= 0 || (file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) < 0)
       error = "'" + path + "' is not an HDF5 file (damaged, or not a checkpoint)";
     std::string format;
-    int version = 0, n[3], types[6];
+    int n[3], types[6];
     double lo[3], hi[3];
     header.resize(6);
     if (error.empty() && (!h5::readAttribute(file, "format", format) || format != kFormat))
@@ -322,6 +323,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   broadcast(comm, setup_);
   for (std::vector<double>* v : {&header, &rows, &contacts, &windows, &fieldSnaps, &particleSnaps}) broadcast(comm, *v);
   MPI_Bcast(&floor, 1, MPI_DOUBLE, 0, comm);
+  MPI_Bcast(&version, 1, MPI_INT, 0, comm);
   unpackRun(header, run_);
   run_.penalizationFloor = floor;
   run_.fieldSnapshots = fieldSnaps;
@@ -329,6 +331,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   std::map<std::int64_t, std::size_t> index;
   for (std::size_t i = 0; i * kParticleCols < rows.size(); ++i) {
     particles_.push_back(unpack(&rows[kParticleCols * i]));
+    if (version < 2) particles_.back().flags &= ~kTouching;  // another meaning in version 1
     index[particles_.back().id] = i;
   }
   MPI_Bcast(&contactCols, 1, MPI_INT, 0, comm);

@@ -100,9 +100,9 @@ TEST_CASE("Window history: none in contact, then the contact's change acts as on
 TEST_CASE("Window history: a small, light sphere in a viscous liquid stays stable (the kick's own change implicit)", "[dem][basset]")
 {
   // a = 0.1 mm, rho_p 1100 in a liquid of rho 1000, mu 0.5, half kicks of 5e-5 s: 2 K sqrt(dt/2) / m
-  // is about 7, where an explicit history force would grow without bound. The contact (elastic,
-  // 0.01 s) runs up a debt many times the sphere's speed; the departure after it (to 2 cells) is a
-  // window out of contact, where the force acts through the implicit kick.
+  // is about 7, where an explicit history force would grow without bound. After the contact
+  // (elastic, 0.01 s) its change, about twice the impact speed, enters the history at once; the
+  // departure (to 2 cells) is a window out of contact, where the force acts through the implicit kick.
   Config c = boxConfig({0, 0, 0}, {0.002, 0.002, 0.002}, {40, 40, 40});
   c.fluid.off = false;
   c.fluid.rho = 1000;
