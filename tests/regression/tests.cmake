@@ -167,6 +167,10 @@ vp_case_run(restitution_impact 2 --expect particle_kinetic_energy=7.663637468e-0
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -time_final 0.022 -output_dt 0 -monitor_every 0)
 vp_case_run(oblique_collision 2 --expect kinetic_energy=0.0002303642324:1e-6 --expect particle_kinetic_energy=0.0006315704409:1e-6
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 ${VP_SHORT})
+# The oblique case through its impact (d/dx 4: contact at steps 171-181 of 300) and the departure, where
+# the history force acts (stored values; without it the particle kinetic energy is 5.897515079e-05).
+vp_case_run(oblique_collision_impact 2 --expect kinetic_energy=0.0001439471404:1e-6 --expect particle_kinetic_energy=7.318679874e-05:1e-6
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/oblique_collision.opts -grid_n 24,24,28 -output_dt 0 -monitor_every 0)
 # The immersed dam breaks, coarse (d/dx 3) and short, on 2 ranks: outputs and stored values; the
 # loose one also on 1 and 3 ranks against the same values (results independent of the rank count).
 foreach(kind loose dense)
