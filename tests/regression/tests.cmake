@@ -247,25 +247,21 @@ vp_restart(falling_sphere_3_ranks 2 --restart-np 3 --steps 20 --at 10 --tol 1e-6
 vp_restart(restitution 2 --restart-np 2 --steps 40 --at 20 --tol 0
            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/restitution.opts -grid_n 24,24,28)
 # Two spheres of the restitution case's set-up: the upper falls onto the lower, which rests on the
-# floor; the checkpoint at step 30 falls while they leave each other and the floor after the impact
+# floor (contacts at steps 4-22).
+set(VP_PAIR_IMPACT $<TARGET_FILE:vpsolve> -grid_n 24,24,28 -grid_hi 0.018,0.018,0.021 -fluid_rho 935 -fluid_mu 0.01
+    -gravity 0,0,-9.81 -particles_file ${VP_DEM_DATA}/pair_impact.csv -contact_restitution 0.97
+    -contact_restitution_t 0.1 -contact_friction 0.11 -contact_roughness 2e-4 -contact_tc_steps 10
+    -health_overlap_max 0.3 -contact_hydro limit -contact_hydro_departure 1 -contact_hydro_history 1 -penalization_projection weighted
+    -pressure_pc_type pfmg -lub_model llcm -dem_substeps 50 -time_dt 2e-4 -track_particles all)
+# The checkpoint at step 30 falls while they leave each other and the floor after the impact
 # (-contact_hydro_departure): the pair's departure state travels with the contacts and the history
 # force's modes (-contact_hydro_history) with the particles (bitwise; with the state dropped from the
 # checkpoint the continuation differs from step 31).
-vp_restart(pair_departure 2 --restart-np 2 --steps 40 --at 30 --tol 0
-           -- $<TARGET_FILE:vpsolve> -grid_n 24,24,28 -grid_hi 0.018,0.018,0.021 -fluid_rho 935 -fluid_mu 0.01
-           -gravity 0,0,-9.81 -particles_file ${VP_DEM_DATA}/pair_impact.csv -contact_restitution 0.97
-           -contact_restitution_t 0.1 -contact_friction 0.11 -contact_roughness 2e-4 -contact_tc_steps 10
-           -health_overlap_max 0.3 -contact_hydro limit -contact_hydro_departure 1 -contact_hydro_history 1 -penalization_projection weighted
-           -pressure_pc_type pfmg -lub_model llcm -dem_substeps 50 -time_dt 2e-4 -track_particles all)
-# The same from step 12, inside the contacts (steps 4-22): the velocity change of a contact under way,
-# which enters the history force when the contact ends, travels with the checkpoint (left out of it,
-# the continuation differs).
-vp_restart(pair_in_contact 2 --restart-np 2 --steps 40 --at 12 --tol 0
-           -- $<TARGET_FILE:vpsolve> -grid_n 24,24,28 -grid_hi 0.018,0.018,0.021 -fluid_rho 935 -fluid_mu 0.01
-           -gravity 0,0,-9.81 -particles_file ${VP_DEM_DATA}/pair_impact.csv -contact_restitution 0.97
-           -contact_restitution_t 0.1 -contact_friction 0.11 -contact_roughness 2e-4 -contact_tc_steps 10
-           -health_overlap_max 0.3 -contact_hydro limit -contact_hydro_departure 1 -contact_hydro_history 1 -penalization_projection weighted
-           -pressure_pc_type pfmg -lub_model llcm -dem_substeps 50 -time_dt 2e-4 -track_particles all)
+vp_restart(pair_departure 2 --restart-np 2 --steps 40 --at 30 --tol 0 -- ${VP_PAIR_IMPACT})
+# The same from step 12, inside the contacts: the velocity change of a contact under way, which
+# enters the history force when the contact ends, travels with the checkpoint (left out of it, the
+# continuation differs).
+vp_restart(pair_in_contact 2 --restart-np 2 --steps 40 --at 12 --tol 0 -- ${VP_PAIR_IMPACT})
 vp_bad_input(checkpoint_every 1 "option -checkpoint_every: must be >= 0 \\(0: no checkpoints\\), got -5" -checkpoint_every -5)
 vp_bad_input(checkpoint_keep 1 "option -checkpoint_keep: must be >= 1, got 0" -checkpoint_keep 0)
 vp_bad_input(restart_not_checkpoint 1 "option -restart: '.*taylor_green.opts' is not an HDF5 file"
