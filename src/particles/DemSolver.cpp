@@ -71,7 +71,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
   // A checkpoint written with other -contact_hydro options: their flags do not apply here.
-  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? (kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching)
+  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? kContactFlags
                              : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
   for (std::size_t i = 0; i < store_.nOwned; ++i) {
     store_.flags[i] &= ~stale;
@@ -145,7 +145,7 @@ void DemSolver::computeForces(double dt)
   if (resolvedInContact_ != ContactHydro::Keep)
     for (std::size_t i = 0; i < s.size(); ++i) {
       const bool candidate = departureGap_ > 0 && (s.flags[i] & (kWallImpact | kDeparting));
-      s.flags[i] = (s.flags[i] & ~(kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching)) | (candidate ? kDeparting : 0);
+      s.flags[i] = (s.flags[i] & ~kContactFlags) | (candidate ? kDeparting : 0);
     }
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;

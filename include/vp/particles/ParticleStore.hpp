@@ -19,6 +19,8 @@ namespace vp {
 enum ParticleFlag : std::uint8_t {
   kFixed = 1, kResolvedForceOff = 2, kDeparting = 4, kWallImpact = 8, kPairDeparting = 16, kTouching = 32
 };
+// The flags the DEM's force loop sets anew every sub-step (-contact_hydro other than keep).
+constexpr std::uint8_t kContactFlags = kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching;
 
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
