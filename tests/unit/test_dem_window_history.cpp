@@ -133,3 +133,72 @@ TEST_CASE("Window history: a small, light sphere in a viscous liquid stays stabl
   CHECK(std::isfinite(fastest));
   CHECK(fastest <= 1.001 * bound);  // the history force takes energy, it never gives it
 }
+
+TEST_CASE("Window history: a re-contact inside a window fades the modes and adds its change at its end", "[dem][basset]")
+{
+  // A sphere between floor and ceiling with a cell of play: it leaves the floor after its impact, still
+  // departing when it meets the ceiling, so one window holds two contacts, the second one with
+  // modes already filled. No gravity and no lubrication: out of contact the history force alone
+  // changes the velocity, which the test compares flight by flight with the force of an
+  // independent record (BassetHistory) that holds the velocity through each contact and takes
+  // its change at its end.
+  const double gap = 5e-4, tc = 1e-3, dt = 4e-6, v0 = 0.2;
+  Config c = boxConfig({0, 0, 0}, {0.018, 0.018, 2 * kA + gap}, {36, 36, 7});  // a cell is gap
+  c.fluid.off = false;
+  c.fluid.rho = kRho;
+  c.fluid.mu = kMu;
+  ParticleConfig pc = contactConfig(tc, 1.0, 0.25);
+  pc.contact.hydro = ContactHydro::Limit;
+  pc.contact.departureCells = 2;  // beyond the ceiling: departing from the floor until it touches
+  pc.contact.hydroHistory = true;
+  pc.substeps = 50;
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  DemSolver dem(grid, c, pc, {sphere(1, {0.009, 0.009, kA + gap / 2}, kA, kSteel, {0, 0, -v0})});
+  ParticleStore& s = dem.particles();
+  const int steps = 3300;
+  std::vector<double> vz{s.v[0].z};
+  std::vector<std::uint8_t> flags{0};
+  for (int k = 0; k < steps; ++k) {
+    s.fhyd[0] = Vec3{};
+    dem.advance(k * dt, dt);
+    vz.push_back(s.v[0].z);
+    flags.push_back(s.flags[0]);
+  }
+  const auto window = [&](int k) { return (flags[k] & (kResolvedForceOff | kDeparting)) != 0; };
+  const auto touching = [&](int k) { return (flags[k] & kTouching) != 0; };
+  int first = 1;
+  while (first <= steps && !window(first)) ++first;
+  REQUIRE(first < steps);
+  REQUIRE(touching(first));
+  // The contacts' start and end samples, and the window unbroken from the first on.
+  std::vector<std::pair<int, int>> contacts;
+  bool unbroken = true;
+  for (int k = first; k <= steps; ++k) {
+    unbroken = unbroken && window(k);
+    if (touching(k) && !touching(k - 1)) contacts.push_back({k, steps + 1});
+    if (!touching(k) && touching(k - 1)) contacts.back().second = k;
+  }
+  INFO("contacts at " << contacts[0].first << "-" << contacts[0].second << ", " << (contacts.size() > 1 ? contacts[1].first : -1) << "-" << (contacts.size() > 1 ? contacts[1].second : -1) << "; vz at the end " << vz.back());
+  REQUIRE(contacts.size() >= 3);  // floor, ceiling, floor
+  REQUIRE(contacts[1].second <= steps);
+  CHECK(unbroken);
+  CHECK(vz[contacts[1].first - 1] > 0.5 * v0);  // the ceiling is met while still departing
+  const double m = kSteel * 4.0 / 3.0 * M_PI * kA * kA * kA, K = 6 * kA * kA * std::sqrt(M_PI * kRho * kMu);
+  BassetHistory record(dt, vz[first - 1]);
+  double held = vz[first - 1];
+  std::vector<double> measured(2, 0.0), predicted(2, 0.0);
+  for (int k = first; k < contacts[2].first; ++k) {
+    if (!touching(k)) held = vz[k];
+    record.push(held);
+    // The flights between the contacts, their steps wholly out of contact.
+    const int flight = k > contacts[0].second && k < contacts[1].first ? 0 : k > contacts[1].second ? 1 : -1;
+    if (flight < 0) continue;
+    measured[flight] += vz[k] - vz[k - 1];
+    predicted[flight] += -K * record.integral() * dt / m;
+  }
+  for (int f = 0; f < 2; ++f) {
+    INFO("flight " << f << ": velocity change " << measured[f] << " m/s, the force's impulse / m " << predicted[f]);
+    CHECK(std::fabs(measured[f]) > 0.02 * v0);  // a real effect
+    CHECK(std::fabs(measured[f] / predicted[f] - 1) < 0.05);
+  }
+}
