@@ -3,6 +3,7 @@
   restitution: e(St) of a steel sphere (d = 3 mm, rho_p/rho 8.34) driven onto a wall, St 5-1000 by
                the viscosity, against e_dry exp(-35/St); the cases' set-up (limit, weighted projection),
                keep and the plain projection at 3 St
+  glass_grid:  the light sphere (glass in water) at impact St 620-640 against the grid, d/dx 8 to 24
   timestep:    e at St 27, 130 and 450 against the fluid step (CFL 0.5 to 1/16), d/dx 8, the case's
                contact (stretched over 10 fluid steps); with --short also a real, short one (50 us)
   gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
@@ -21,7 +22,7 @@
                force, and with it left out from the contact to a gap of d/16 (the departure's window
                at d/dx 16): what the history of the boundary layer takes from a rebound, and where it
                takes it
-usage: collisions.py [restitution|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
+usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -241,6 +242,30 @@ def restitution():
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
 
+def glass_grid():
+    """The light sphere (glass in water) at nominal St 1000 (impact St about 620-640), the cases'
+    set-up, against the grid, d/dx 8 to 24: where its rebound converges against the pass band."""
+    grids, pts = (8, 12, 16, 20, 24), []
+    for r in grids:
+        out = restitution_run(1000, HYDRO, r=r, cfl=study_cfl(1000), rho_p=GLASS, rho_f=WATER)
+        sti, e = out[0], out[1] / E_DRY
+        pts.append((r, e - math.exp(-35 / sti)))
+        print("glass_grid: d/dx %2d: impact St %.1f, e/e_dry %.4f, exp(-35/St) %.4f, difference %+.4f" %
+              (r, sti, e, math.exp(-35 / sti), pts[-1][1]), flush=True)
+    fig, ax = plt.subplots(figsize=(6, 3.8))
+    ax.axhspan(-0.1, 0.1, color="0.85", label="pass band +-0.1")
+    ax.axhline(0, color="k", lw=1, label="exp(-35/St)")
+    ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", mfc="none", label="vpsolve, the cases' set-up")
+    ax.set_xlabel("d/dx")
+    ax.set_ylabel("e/e_dry - exp(-35/St)")
+    ax.set_xticks(grids)
+    ax.set_ylim(-0.2, 0.12)
+    ax.set_title("Glass sphere in water (rho_p/rho 2.5), impact St 620-640, against the grid", fontsize=9)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "restitution_glass_grid.png"), dpi=120)
+
+
 def harada_run(st, history, window=0.0):
     """The e(St) study's sphere and release (3 d above the floor at U_RELEASE, gravity) in the Harada
     point-particle model, the wall y = 0, with a real contact (10 us, dry restitution E_DRY) and the
@@ -361,10 +386,11 @@ def gondret(hydro=HYDRO):
         ax.plot([(x["time"] - t0) / tref for x in rows], [(x["z"] - d / 2) / d for x in rows], "-", label="vpsolve d/dx %d" % res)
         ax.axhline(0, color="k", lw=0.5)
         ap = apexes(rows, d / 2)
+        st_in = STEEL * u_in * d / (9 * STEEL / GONDRET[st][1] * GONDRET[st][2])  # St of u(0.1 d)
         print("gondret: St %d (-contact_hydro %s): u(0.1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
-              "(exp(-35/St) %.3f); apex heights (gap/d) %s" %
-              (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st),
-               ", ".join("%.3f" % x for x in ap[:3]) or "none"), flush=True)
+              "(exp(-35/St) %.3f; at the impact St %.1f of u(0.1 d) %.3f); apex heights (gap/d) %s" %
+              (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st), st_in,
+               math.exp(-35 / st_in), ", ".join("%.3f" % x for x in ap[:3]) or "none"), flush=True)
         ax.set_title("Gondret St %d: d = %g mm, t_ref = sqrt(d/g) = %.4f s" % (st, d * 1e3, tref), fontsize=9)
         ax.set_xlabel("(t - t_contact) / t_ref")
         ax.set_ylabel("gap / d")
@@ -780,6 +806,6 @@ def pair_position_figure(by_gap):
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada"):
+    for name in ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada"):
         if what in (name, "all") and name in globals():
             globals()[name]()
