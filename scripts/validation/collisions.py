@@ -36,7 +36,7 @@ usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibratio
   --reuse: read runs already in /tmp/vp_col_* instead of running them again (a run's name comes from
            its options, not from the code: after a change of the model, remove the runs it touches)"""
 import csv, math, os, subprocess, sys
-from common import plt, root, ranks, vpsolve, outdir
+from common import plt, root, ranks, vpsolve, outdir, chosen_study
 
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
@@ -804,8 +804,10 @@ def pair_position_figure(by_gap):
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_pair_position.png"), dpi=120)
 
+STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada")
+
 if __name__ == "__main__":
-    what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("--") else "all"
-    for name in ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada"):
-        if what in (name, "all") and name in globals():
+    what = chosen_study(__doc__, STUDIES)
+    for name in STUDIES:
+        if what in (name, "all"):
             globals()[name]()

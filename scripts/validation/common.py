@@ -1,6 +1,7 @@
 """Shared by the validation scripts: where the repository, the solver and the figures are, and a
 non-interactive matplotlib."""
 import os
+import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
@@ -10,3 +11,20 @@ ranks = os.environ.get("NP", "2")
 vpsolve = os.path.join(root, "build", "vpsolve")
 outdir = os.path.join(root, "docs", "validation")
 os.makedirs(outdir, exist_ok=True)
+
+
+def help_requested(doc):
+    """With -h or --help: prints the script's usage (its docstring) and exits, running nothing."""
+    if "-h" in sys.argv or "--help" in sys.argv:
+        print(doc.strip())
+        sys.exit(0)
+
+
+def chosen_study(doc, studies):
+    """The study named first on the command line (all when none is), refused unless it is one of
+    `studies`; -h / --help prints the usage instead."""
+    help_requested(doc)
+    what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else "all"
+    if what not in tuple(studies) + ("all",):
+        sys.exit("unknown study '%s' (valid: %s, all)" % (what, ", ".join(studies)))
+    return what

@@ -9,7 +9,7 @@ usage: coupling.py [hasimoto|rotation|falling|width|all] [--fine] [--reuse]
   --reuse: plot the runs already in /tmp/vp_val_* as they are (also ones stopped early) instead of
            running them again"""
 import csv, math, os, subprocess, sys
-from common import plt, root, ranks, vpsolve, outdir
+from common import plt, root, ranks, vpsolve, outdir, chosen_study
 fine = "--fine" in sys.argv
 reuse = "--reuse" in sys.argv
 SN, CLIFT = 0.1462, 0.1418  # terminal speeds from Schiller-Naumann and the Clift-Grace-Weber drag curve
@@ -187,12 +187,8 @@ def width():
     fig.savefig(os.path.join(outdir, "falling_sphere_box.png"), dpi=120)
 
 
-what = [a for a in sys.argv[1:] if not a.startswith("--")] or ["all"]
-if what[0] in ("hasimoto", "all"):
-    hasimoto()
-if what[0] in ("rotation", "all"):
-    rotation()
-if what[0] in ("falling", "all"):
-    falling()
-if what[0] in ("width", "all"):
-    width()
+STUDIES = ("hasimoto", "rotation", "falling", "width")
+what = chosen_study(__doc__, STUDIES)
+for name in STUDIES:
+    if what in (name, "all"):
+        globals()[name]()

@@ -4,7 +4,9 @@ Runs vpsolve, reads its HDF5 output, writes docs/validation/{taylor_green_conver
 import math, os, subprocess
 import h5py
 import numpy as np
-from common import plt, root, ranks as np_ranks, vpsolve, outdir
+from common import plt, root, ranks as np_ranks, vpsolve, outdir, help_requested
+
+help_requested(__doc__)
 
 
 def run(case, out, *opts):

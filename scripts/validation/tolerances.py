@@ -7,7 +7,9 @@ solvers (CG + BoomerAMG, CG + Jacobi):
 Prints a table (relative changes against 1e-10) and draws docs/validation/tolerances.png.
 usage: tolerances.py [--reuse]"""
 import csv, os, subprocess, sys
-from common import plt, root, ranks, vpsolve, outdir
+from common import plt, root, ranks, vpsolve, outdir, help_requested
+
+help_requested(__doc__)
 reuse = "--reuse" in sys.argv
 TOLS = [1e-10, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2]
 CAVITY = ["-grid_n", "64,64,64", "-grid_lo", "0,0,0", "-grid_hi", "0.1,0.1,0.1", "-bc_xlo", "wall", "-bc_xhi", "wall",
