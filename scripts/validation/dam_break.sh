@@ -12,6 +12,11 @@
 # Cost on 2 cores (measured 2026-11-23/26): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per
 # simulated second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column.
 set -euo pipefail
+case ${1:-8} in
+  -h|--help) sed -n "2,13s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  grid|[1-9]|[1-9][0-9]) ;;
+  *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
+esac
 t=${2:-30}
 cd "$VP_ROOT"
 labels=()
