@@ -20,11 +20,14 @@ def help_requested(doc):
         sys.exit(0)
 
 
-def chosen_study(doc, studies):
-    """The study named first on the command line (all when none is), refused unless it is one of
-    `studies`; -h / --help prints the usage instead."""
+def chosen_study(doc, studies, valued=()):
+    """The first study named on the command line (all when none is), refused unless it is one of
+    `studies`; the options in `valued` take the next argument as their value. -h / --help prints the
+    usage instead."""
     help_requested(doc)
-    what = sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else "all"
+    args = sys.argv[1:]
+    names = [a for k, a in enumerate(args) if not a.startswith("-") and (k == 0 or args[k - 1] not in valued)]
+    what = names[0] if names else "all"
     if what not in tuple(studies) + ("all",):
         sys.exit("unknown study '%s' (valid: %s, all)" % (what, ", ".join(studies)))
     return what
