@@ -27,6 +27,7 @@ usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibratio
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
+               (figure restitution_roughness.png)
   --no-departure: restitution with the cases' set-up (-contact_hydro_departure 1), the same without it
                (-contact_hydro_departure 0), and a glass sphere in water (St 100-1000) both ways; the other
                wet studies without it (their runs and figures named ..._nodeparture)
@@ -238,7 +239,8 @@ def restitution():
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
-    name = "restitution_departure.png" if WITHOUT else "restitution_history.png" if "--no-history" in sys.argv else "restitution_stokes.png"
+    name = ("restitution_departure.png" if WITHOUT else "restitution_history.png" if "--no-history" in sys.argv else
+            "restitution_roughness.png" if "--roughness" in sys.argv else "restitution_stokes.png")
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
 
