@@ -206,7 +206,7 @@ def restitution():
         sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
     for hydro, extra, mark, st_list, (rho_p, rho_f) in sets:
-        name = hydro + (", departure 1 cell, history force, plain projection" if extra == PLAIN else ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
+        name = hydro + (", departure 1 cell, history force, plain projection" if extra == PLAIN else ", departure 1 cell, history force, roughness 5e-5 d" if extra == ROUGH_GONDRET else
                         ", no history force" if extra == NO_HISTORY else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
                         ", departure 1 cell, history force" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
