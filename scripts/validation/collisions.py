@@ -206,10 +206,11 @@ def restitution():
         sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
     for hydro, extra, mark, st_list, (rho_p, rho_f) in sets:
-        name = hydro + (", departure 1 cell, history force, plain projection" if extra == PLAIN else ", departure 1 cell, history force, roughness 5e-5 d" if extra == ROUGH_GONDRET else
+        cases = ", departure 1 cell, history force"  # what the cases add to -contact_hydro limit
+        name = hydro + (cases + ", plain projection" if extra == PLAIN else cases + ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
                         ", no history force" if extra == NO_HISTORY else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
-                        ", departure 1 cell, history force" if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
+                        cases if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
@@ -395,7 +396,7 @@ def gondret(hydro=HYDRO):
         ax.plot([(x["time"] - t0) / tref for x in rows], [(x["z"] - d / 2) / d for x in rows], "-", label="vpsolve d/dx %d" % res)
         ax.axhline(0, color="k", lw=0.5)
         ap = apexes(rows, d / 2)
-        st_in = STEEL * u_in * d / (9 * STEEL / GONDRET[st][1] * GONDRET[st][2])  # St of u(0.1 d)
+        st_in = GONDRET[st][1] * u_in * d / (9 * GONDRET[st][2])  # St of u(0.1 d): (rho_p/rho) u d / (9 nu)
         print("gondret: St %d (-contact_hydro %s): u(0.1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
               "(exp(-35/St) %.3f; at the impact St %.1f of u(0.1 d) %.3f); apex heights (gap/d) %s" %
               (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st), st_in,
