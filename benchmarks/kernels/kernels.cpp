@@ -5,12 +5,14 @@
 // prints: kernel,ms,bytes_per_cell,GB_per_s,percent_of_copy
 #include "vp/core/Config.hpp"
 #include "vp/core/Error.hpp"
+#include "vp/core/VectorClones.hpp"
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/fluid/Operators.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
 #include "vp/grid/Grid.hpp"
 #include <algorithm>
+#include <cstddef>
 #include <functional>
 #include <petscsys.h>
 #include <vector>
@@ -27,6 +29,29 @@ double medianSeconds(int reps, const std::function<void()>& f)
   }
   std::sort(t.begin(), t.end());
   return t[t.size() / 2];
+}
+
+// The advection sweep's reads without its arithmetic: the 25 neighbour values that every element of
+// ops::advectionAndLaplacian loads (the same offsets, rows addressed the same way), summed into one
+// output. Its time is what the sweep's unaligned loads alone cost (benchmarks/RESULTS.md).
+VP_VECTOR_CLONES void advectionLoadsOnly(const vp::Grid& g, PetscScalar**** u, PetscScalar**** N)
+{
+  const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), ny = g.end(1) - j0;
+  const PetscScalar* u0 = &u[k0][j0][i0][0];
+  const std::ptrdiff_t oy = &u[k0][j0 + 1][i0][0] - u0, oz = &u[k0 + 1][j0][i0][0] - u0, count = 3 * (g.end(0) - i0);
+  PetscScalar* n0 = &N[k0][j0][i0][0];
+  for (PetscInt k = k0; k < g.end(2); ++k)
+    for (PetscInt j = j0; j < g.end(1); ++j) {
+      const PetscScalar* q = u0 + (j - j0) * oy + (k - k0) * oz;
+      PetscScalar* n = n0 + count * ((k - k0) * ny + (j - j0));
+#pragma omp simd
+      for (std::ptrdiff_t m = 0; m < count; ++m) {
+        const PetscScalar* p = q + m;
+        n[m] = p[0] + p[3] + p[-3] + p[oy] + p[-oy] + p[oz] + p[-oz] + p[2] + p[2 - oy] + p[-1] + p[-1 - oy] + p[1] +
+               p[1 - oz] + p[-2] + p[-2 - oz] + p[1 + oy] + p[oy - 2] + p[oy - 1] + p[oy - 1 - oz] + p[-1 - oz] +
+               p[2 + oz] + p[oz - 1] + p[1 + oz] + p[1 + oz - oy] + p[1 - oy];
+      }
+    }
 }
 
 } // namespace
@@ -62,6 +87,10 @@ int main(int argc, char** argv)
       {"advection + Laplacian", 72, [&] {
          vp::FaceArray u(g.faceDM(), uL), Na(g.faceDM(), N), La(g.faceDM(), L);
          vp::ops::advectionAndLaplacian(g, u.a, Na.a, La.a);
+       }},
+      {"advection's loads alone (probe: its 25 reads summed)", 48, [&] {
+         vp::FaceArray u(g.faceDM(), uL), Na(g.faceDM(), N);
+         advectionLoadsOnly(g, u.a, Na.a);
        }},
       {"divergence", 32, [&] {
          vp::FaceArray u(g.faceDM(), uL);
