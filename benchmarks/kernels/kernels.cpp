@@ -32,8 +32,9 @@ double medianSeconds(int reps, const std::function<void()>& f)
 }
 
 // The advection sweep's reads without its arithmetic: the 25 neighbour values that every element of
-// ops::advectionAndLaplacian loads (the same offsets, rows addressed the same way), summed into one
-// output. Its time is what the sweep's unaligned loads alone cost (benchmarks/RESULTS.md).
+// ops::advectionAndLaplacian loads (the same offsets, rows addressed the same way), added in a tree
+// (no long chain of dependent adds) into one output. Its time is what the sweep's unaligned loads
+// alone cost (benchmarks/RESULTS.md).
 VP_VECTOR_CLONES void advectionLoadsOnly(const vp::Grid& g, PetscScalar**** u, PetscScalar**** N)
 {
   const PetscInt i0 = g.start(0), j0 = g.start(1), k0 = g.start(2), ny = g.end(1) - j0;
@@ -42,14 +43,16 @@ VP_VECTOR_CLONES void advectionLoadsOnly(const vp::Grid& g, PetscScalar**** u, P
   PetscScalar* n0 = &N[k0][j0][i0][0];
   for (PetscInt k = k0; k < g.end(2); ++k)
     for (PetscInt j = j0; j < g.end(1); ++j) {
-      const PetscScalar* q = u0 + (j - j0) * oy + (k - k0) * oz;
-      PetscScalar* n = n0 + count * ((k - k0) * ny + (j - j0));
+      const PetscScalar* __restrict q = u0 + (j - j0) * oy + (k - k0) * oz;
+      PetscScalar* __restrict n = n0 + count * ((k - k0) * ny + (j - j0));
 #pragma omp simd
       for (std::ptrdiff_t m = 0; m < count; ++m) {
         const PetscScalar* p = q + m;
-        n[m] = p[0] + p[3] + p[-3] + p[oy] + p[-oy] + p[oz] + p[-oz] + p[2] + p[2 - oy] + p[-1] + p[-1 - oy] + p[1] +
-               p[1 - oz] + p[-2] + p[-2 - oz] + p[1 + oy] + p[oy - 2] + p[oy - 1] + p[oy - 1 - oz] + p[-1 - oz] +
-               p[2 + oz] + p[oz - 1] + p[1 + oz] + p[1 + oz - oy] + p[1 - oy];
+        const double row = ((p[0] + p[3]) + (p[-3] + p[2])) + ((p[-1] + p[1]) + p[-2]);
+        const double y = ((p[oy] + p[-oy]) + (p[1 + oy] + p[oy - 2])) + ((p[oy - 1] + p[2 - oy]) + (p[-1 - oy] + p[1 - oy]));
+        const double z = ((p[oz] + p[-oz]) + (p[1 - oz] + p[-2 - oz])) + ((p[-1 - oz] + p[2 + oz]) + (p[oz - 1] + p[1 + oz]));
+        const double yz = p[oy - 1 - oz] + p[1 + oz - oy];
+        n[m] = (row + yz) + (y + z);
       }
     }
 }
