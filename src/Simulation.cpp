@@ -295,7 +295,7 @@ int Simulation::run()
 {
   openOutputs();
   printSetup();
-  // A restart continues the previous run's outputs: its snapshots and tracker rows are written.
+  // A restart continues the previous run's outputs: its snapshots and tracked-particle rows are written.
   if (!restart_) {
     if (snapshots_.on()) output();
     if (tracker_) tracker_->record(dem_->particles(), time_);
@@ -441,9 +441,11 @@ void Simulation::finish(const std::string& stopReason)
                 steps, time_, wall, wall / std::max(steps, 1), wall / std::max(steps, 1) / grid_.cells() * 1e6,
                 double(pressureIterationsTotal_) / std::max(steps, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
   long particles = 0;
+  double particleKineticEnergy = 0;
   if (dem_) {
     const DemDiagnostics d = dem_->diagnostics();
     particles = d.particles;
+    particleKineticEnergy = d.kineticEnergy;
     const double particleSteps = double(d.particles) * steps * particleCfg_.substeps;
     PetscPrintf(comm, "vpsolve: DEM %ld particles (%ld at the start of this run), %d x %d sub-steps, loop time %.3f s, "
                 "%.4g particle-steps/s, %zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
@@ -471,8 +473,9 @@ void Simulation::finish(const std::string& stopReason)
                     ",\n  \"time\": " + formatNumber(time_) + ",\n  \"steps_this_run\": " + std::to_string(steps) +
                     ",\n  \"wall_seconds\": " + formatNumber(wall) + ",\n  \"loop_seconds\": " + formatNumber(loopWall_) +
                     ",\n  \"stage_seconds\": {" + stages + "}";
-  if (!cfg_.fluid.off) end += ",\n  \"kinetic_energy\": " + formatNumber(cfg_.fluid.rho * fluid_->stats().kineticEnergy);
-  if (dem_) end += ",\n  \"particles_at_start\": " + std::to_string(particlesAtStart_) + ",\n  \"particles\": " + std::to_string(particles);
+  if (!cfg_.fluid.off) end += ",\n  \"kinetic_energy\": " + formatNumber(cfg_.fluid.rho * fluid_->stats().kineticEnergy, 10);
+  if (dem_) end += ",\n  \"particles_at_start\": " + std::to_string(particlesAtStart_) + ",\n  \"particles\": " + std::to_string(particles) +
+                   ",\n  \"particle_kinetic_energy\": " + formatNumber(particleKineticEnergy, 10);
   try {
     writeRunRecord(comm, cfg_.output.dir, end);
   } catch (const std::runtime_error& e) {  // a full disk: the start record stays

@@ -34,10 +34,10 @@ usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibratio
   --no-history: restitution with the cases' set-up (-contact_hydro_history 1: the Basset history force
                while the resolved force is excluded) and the same without it, steel and glass in water
   --short: timestep also with the short contact
-  --reuse: read runs already in /tmp/vp_col_* instead of running them again (a run's name comes from
+  --reuse: read runs already in $VP_SCRATCH/vp_col_* (/tmp unless set) instead of running them again (a run's name comes from
            its options, not from the code: after a change of the model, remove the runs it touches)"""
 import csv, math, os, subprocess, sys
-from common import plt, root, ranks, vpsolve, outdir, chosen_study
+from common import plt, root, ranks, vpsolve, harada as harada_bin, scratch, outdir, chosen_study
 
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
@@ -137,7 +137,7 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     others = [str(o) for o in extra if o not in PLAIN]  # the run's options beyond the plain projection
     tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
     tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
-    out = "/tmp/vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, tag, r, d))
+    out = os.path.join(scratch, "vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, tag, r, d)))
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
                "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
@@ -282,10 +282,10 @@ def harada_run(st, history, window=0.0):
     cases' roughness. Returns (St at impact, e) as the resolved study measures them, or None."""
     a, d = D3 / 2, D3
     mu = study_mu(st)
-    out = "/tmp/vp_col_harada_st%g_history%d" % (st, history) + ("_window%g" % window if window else "")
+    out = os.path.join(scratch, "vp_col_harada_st%g_history%d" % (st, history) + ("_window%g" % window if window else ""))
     tc = 1e-5
     if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
-        subprocess.run([str(o) for o in [os.path.join(root, "build", "harada"), "-output_dir", out, "-fluid_rho", RHO_F,
+        subprocess.run([str(o) for o in [harada_bin, "-output_dir", out, "-fluid_rho", RHO_F,
                         "-fluid_mu", mu, "-particle_density", STEEL, "-particle_radius", a,
                         "-particle_position", "0,%r,0" % (a + 3 * d), "-particle_velocity", "0,%r,0" % -U_RELEASE,
                         "-gravity", "0,-9.81,0", "-contact_restitution", E_DRY, "-contact_roughness", 2e-4,
@@ -369,7 +369,7 @@ def gondret_run(st, hydro, r=None, extra=()):
     rho = STEEL / ratio
     h = d / r
     dt = 0.5 * h / u
-    out = "/tmp/vp_col_gondret_st%d_%s_r%d" % (st, hydro, r) + "".join(str(x) for x in extra).replace("-", "_")
+    out = os.path.join(scratch, "vp_col_gondret_st%d_%s_r%d" % (st, hydro, r) + "".join(str(x) for x in extra).replace("-", "_"))
     rows = run(out, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 10 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 10 * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", d / 2,
                "-particle_velocity", "0,0,%g" % -u, "-fluid_rho", rho, "-fluid_mu", rho * nu, "-time_dt", dt,
@@ -437,7 +437,7 @@ def oblique_dry():
     a, vn = 1.59e-3, 0.5
     out = []
     for pin in PSI_IN:
-        o = "/tmp/vp_col_dry_psi%g" % pin
+        o = os.path.join(scratch, "vp_col_dry_psi%g" % pin)
         rows = run(o, "-fluid_off", "-grid_n", "4,4,4", "-grid_lo", "0,0,0", "-grid_hi", "0.2,0.02,0.02",
                    "-particle_position", "0.01,0.01,%g" % (a * 1.02), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
                    "-particle_radius", a, "-particle_density", 2500, "-contact_restitution", 0.83,
@@ -456,7 +456,7 @@ def oblique_wet(material):
     out = []
     r = min(res, 12)
     for pin in PSI_IN_WET:
-        o = "/tmp/vp_col_wet_%s_psi%g_r%d%s" % (material, pin, r, SUFFIX)
+        o = os.path.join(scratch, "vp_col_wet_%s_psi%g_r%d%s" % (material, pin, r, SUFFIX))
         rows = run(o, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 4 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 4 * d),
                    "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 1.5 * d), "-particle_velocity", "%g,0,%g" % (pin * vn, -vn),
                    "-particle_density", rho_p, "-fluid_rho", rho, "-fluid_mu", mu, "-contact_friction", mu_c,
@@ -548,7 +548,7 @@ def pair_run(st, label, extra=(), r=12):
     6 d box. Returns (St of the relative speed at gap 0.1 d, e of the relative motion) or None."""
     d, a, u = D3, D3 / 2, U_RELEASE
     h = d / r
-    out = "/tmp/vp_col_pair_%s" % label
+    out = os.path.join(scratch, "vp_col_pair_%s" % label)
     spheres = out + ".csv"
     with open(spheres, "w") as f:
         f.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n0,%r,%r,%r,%r,%r,%r,0,0,0,0,0\n1,%r,%r,%r,%r,%r,0,0,0,0,0,0\n" %
@@ -695,7 +695,7 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0
     bc, one, speed = calib_geometry(mode, eps, box)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
     tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align) + ("" if box == 4 else "_box%g" % box)
-    out = "/tmp/vp_col_cal_" + tag
+    out = os.path.join(scratch, "vp_col_cal_" + tag)
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (box, box, box), "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
               "-contact_roughness", 1e-4] + bc

@@ -8,8 +8,11 @@ import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
 root = os.environ.get("VP_ROOT", os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 ranks = os.environ.get("NP", "2")
-vpsolve = os.path.join(root, "build", "vpsolve")
-outdir = os.path.join(root, "docs", "validation")
+# The binaries, the runs' scratch folder and the figures' folder; the tests point them into their build folder.
+vpsolve = os.environ.get("VPSOLVE", os.path.join(root, "build", "vpsolve"))
+harada = os.environ.get("HARADA", os.path.join(root, "build", "harada"))
+scratch = os.environ.get("VP_SCRATCH", "/tmp")
+outdir = os.environ.get("VP_FIGURES", os.path.join(root, "docs", "validation"))
 os.makedirs(outdir, exist_ok=True)
 
 

@@ -19,9 +19,10 @@ void failOption(const std::string& option, const std::string& what, double value
   failOption(option, what + ", got " + formatNumber(value));
 }
 
-std::string formatNumber(double v)
+std::string formatNumber(double v, int digits)
 {
   std::ostringstream s;
+  s.precision(digits);
   s << v;
   return s.str();
 }

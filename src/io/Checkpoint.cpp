@@ -17,9 +17,9 @@ namespace vp {
 namespace {
 
 const char* const kFormat = "vpsolve checkpoint";
-// Version 2 (2026-11-26): the contacts' departure column and the window_history dataset, which a
-// version 1 reader would drop without a word (version 1 files written on 2026-11-26 may have them;
-// they read with what they have), and flag 32 is kTouching (it was the window history's).
+// Version 2 adds the contacts' departure column and the window_history dataset, which a version 1
+// reader would drop without a word (late version 1 files may have them; they read with what they
+// have), and flag 32 is kTouching (it was the window history's).
 constexpr int kVersion = 2;
 constexpr int kOldestVersion = 1;
 // One row per particle: the kCheckpoint fields of ParticleFields.hpp, each as doubles.
@@ -48,10 +48,10 @@ int particleColumnCount()
 
 const std::string kParticleColumns = particleColumns();
 const int kParticleCols = particleColumnCount();
-constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent before 2026-11-26)
+constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent from the oldest files)
 // id, the Basset modes' x, y, z by mode, the velocity change of a contact under way (absent in the
-// dataset's first form: none); rows only for particles in a window (the dataset is absent before
-// 2026-11-26: none were).
+// dataset's first form: none); rows only for particles in a window (the dataset is absent from the
+// oldest files: none were).
 constexpr int kWindowCols = 4 + 3 * kBassetModes;
 const char* const kWindowDataset = "window_history";
 

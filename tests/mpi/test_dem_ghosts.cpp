@@ -96,12 +96,12 @@ void checkGhostPairs(const Vec3& L, std::array<int, 3> cells, int n, double rmin
 
 } // namespace
 
-TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][ghosts]")
+TEST_CASE("Bucket pairs through ghosts equal brute-force pairs", "[mpi][particles][ghosts]")
 {
   checkGhostPairs({1, 0.8, 0.6}, {10, 8, 6}, 3000, 0.01, 0.01, 1000);
 }
 
-TEST_CASE("Ghosts across several subdomains: a periodic box two halos wide", "[mpi][ghosts]")
+TEST_CASE("Ghosts across several subdomains: a periodic box two halos wide", "[mpi][particles][ghosts]")
 {
   // Halo 0.4 in a 0.8 x 0.8 x 0.8 box of 8 cells a side: on 2-4 ranks a subdomain is 0.2-0.4 wide,
   // so ghosts cross more than one of them, and every rank holds images of its own spheres.

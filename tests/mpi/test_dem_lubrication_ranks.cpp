@@ -6,7 +6,7 @@
 using namespace vp;
 using namespace vp::test;
 
-TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, momentum conserved", "[mpi][lub]")
+TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, momentum conserved", "[mpi][particles][lub]")
 {
   Config c = boxConfig({0, 0, 0}, {0.04, 0.01, 0.01}, {12, 2, 2});
   c.fluid.mu = 0.05;
@@ -38,7 +38,7 @@ TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, mo
   CHECK(closing < 0.5 * 0.02);
 }
 
-TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bitwise one-rank result", "[mpi][lub]")
+TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bitwise one-rank result", "[mpi][particles][lub]")
 {
   // A coupled run's DEM without its fluid (resolved force zero, no gravity): two spheres collide on a
   // rank boundary and leave each other with the departure; its state lives in both owners' lists,

@@ -22,7 +22,7 @@ Vec3 walkStep(std::int64_t id, int step)
 
 } // namespace
 
-TEST_CASE("Random walk with periodic wrap: no particle lost or duplicated", "[mpi][migration]")
+TEST_CASE("Random walk with periodic wrap: no particle lost or duplicated", "[mpi][particles][migration]")
 {
   const MPI_Comm comm = PETSC_COMM_WORLD;
   Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {12, 12, 12}, true);

@@ -24,7 +24,7 @@ std::vector<State> run(MPI_Comm comm, const Config& c, const ParticleConfig& pc,
 
 } // namespace
 
-TEST_CASE("Sliding and sticking contacts across rank boundaries equal the one-rank result", "[mpi]")
+TEST_CASE("Sliding and sticking contacts across rank boundaries equal the one-rank result", "[mpi][particles]")
 {
   Config c = boxConfig({0, 0, 0}, {1, 0.4, 0.4}, {12, 2, 2});
   c.gravity = {0, 0, -9.81};
@@ -54,7 +54,7 @@ TEST_CASE("Sliding and sticking contacts across rank boundaries equal the one-ra
   CHECK(bitwiseEqual(parallel, serial));
 }
 
-TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[mpi][collapse]")
+TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[mpi][particles][collapse]")
 {
   // The benchmark case (benchmarks/dem): 2000 settled spheres,
   // kn = 200 N/m, e = 0.9, mu = 0.25, dt = 3.6e-6 s, walls all round.
@@ -77,7 +77,7 @@ TEST_CASE("Dry granular collapse: 2000 steps bitwise identical to one rank", "[m
   CHECK(bitwiseEqual(parallel, serial));
 }
 
-TEST_CASE("A periodic box two halos wide: colliding spheres bitwise identical to one rank", "[mpi][ghosts]")
+TEST_CASE("A periodic box two halos wide: colliding spheres bitwise identical to one rank", "[mpi][particles][ghosts]")
 {
   // Twelve spheres of radius 0.06-0.08 in a fully periodic 0.4 m box: the halo (2 a_max + skin,
   // 0.176 m) is wider than a subdomain on 3 or 4 ranks and nearly half the box, so ghosts travel

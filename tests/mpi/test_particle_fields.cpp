@@ -106,7 +106,7 @@ ParticleRecord expected(std::int64_t id, Vec3 x, int round)
 
 } // namespace
 
-TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[mpi][fields]")
+TEST_CASE("Every particle field survives migration, ghosts and a checkpoint", "[mpi][particles][fields]")
 {
   const MPI_Comm comm = PETSC_COMM_WORLD;
   int rank, size;

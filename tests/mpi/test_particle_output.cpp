@@ -14,7 +14,7 @@
 using namespace vp;
 using namespace vp::test;
 
-TEST_CASE("Parallel particle snapshot and XDMF index", "[mpi]")
+TEST_CASE("Parallel particle snapshot and XDMF index", "[mpi][particles]")
 {
   const MPI_Comm comm = PETSC_COMM_WORLD;
   int rank;
@@ -32,7 +32,7 @@ TEST_CASE("Parallel particle snapshot and XDMF index", "[mpi]")
   dem.advance(0, 1e-5);
   long pid = getpid();
   MPI_Bcast(&pid, 1, MPI_LONG, 0, comm);
-  const std::string dir = "/tmp/vp_test_particles_" + std::to_string(pid);
+  const std::string dir = "scratch_particles_" + std::to_string(pid);  // under the working folder (the build tree)
   if (rank == 0) mkdir(dir.c_str(), 0755);
   MPI_Barrier(comm);
   ParticleWriter writer(comm, dir);

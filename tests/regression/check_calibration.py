@@ -7,9 +7,9 @@ default activation (0.18 cells) must be within 10 % of the exact value, the cali
 over eps 0.01-0.05 and d/dx 8-16 (measured here: +7.6 % and +9.8 %; without the correction -68 %
 and -43 %). Uses scripts/validation/collisions.py."""
 import sys
-from study import collisions
+from study import collisions, vpsolve_argument
 
-c = collisions(np=1)
+c = collisions(np=1, vpsolve=vpsolve_argument())
 
 r, ok = 8, True
 for eps in (0.01, 0.02):

@@ -8,9 +8,9 @@ in water at impact St 261: e/e_dry 0.818 with it (exp(-35/St) 0.875), 0.519 with
 steel loss within 25 % of the theory's; glass within 0.1 of the curve with the departure and more
 than 0.2 below it without. Uses scripts/validation/collisions.py."""
 import math, sys
-from study import collisions
+from study import collisions, vpsolve_argument
 
-c = collisions(np=2)
+c = collisions(np=2, vpsolve=vpsolve_argument())
 DEP = ["-contact_hydro_departure", 1] + c.NO_HISTORY
 
 st, e, u_in, rows = c.restitution_run(40, c.HYDRO, r=8, extra=DEP, label="test_departure_steel")

@@ -7,9 +7,9 @@ cell centre: within 3 %; measured 0.4 %) and must be within 20 % of Brenner's tw
 (measured +15.3 / +15.8 %: the 4 d periodic box adds about 10 points, the smooth mask 7). Uses
 scripts/validation/collisions.py."""
 import sys
-from study import collisions
+from study import collisions, vpsolve_argument
 
-c = collisions(np=1)
+c = collisions(np=1, vpsolve=vpsolve_argument())
 
 r, eps = 8, 0.5
 exact = c.TWO[eps]

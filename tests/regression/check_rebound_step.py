@@ -9,9 +9,9 @@ without it 0.554 and 0.538, without the departure 0.445 and 0.436). Pass: both r
 differ by at most 0.03, the convergence measured at a fixed stiffness. Uses
 scripts/validation/collisions.py."""
 import sys
-from study import collisions
+from study import collisions, vpsolve_argument
 
-c = collisions(np=2)
+c = collisions(np=2, vpsolve=vpsolve_argument())
 
 e = {}
 for cfl in (0.5, 0.125):

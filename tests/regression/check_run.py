@@ -4,9 +4,14 @@ stored reference values.
 usage: check_run.py --np N --dir OUT [--expect [file.csv:]column=value:reltol ...] [--steps S,S,...] -- vpsolve args...
 --expect: a value of the last row of diagnostics.csv (or of the named CSV file of the run).
 --steps: the steps of the diagnostics.csv rows, exactly.
+--anchor "script args": a check of the run's physics against an independent number, run as
+`/usr/bin/python3 script args <run folder>` after the run (tests/regression/anchor_*.py).
 A run with collapse.csv (-collapse_monitor) must also have written deposit.csv, whose two bins
-next to the back wall hold the last row's height_back (the same spheres)."""
-import argparse, csv, glob, os, shutil, subprocess, sys
+next to the back wall hold the last row's height_back (the same spheres).
+run.json must record the rank count, the options given on the command line, the last step and a
+normal stop reason, the particle counts (none lost; the last snapshot's count) and the last kinetic
+energies of diagnostics.csv."""
+import argparse, csv, glob, json, os, shutil, subprocess, sys
 import xml.etree.ElementTree as ET
 import h5py
 
@@ -64,17 +69,51 @@ def check_collapse(out):
         fail("collapse.csv: front %s below its 99th percentile %s" % (last["front"], last["front99"]))
 
 
+def check_run_record(out, np, cmd, last):
+    rec = json.load(open(os.path.join(out, "run.json")))
+    if rec.get("ranks") != np:
+        fail("run.json: ranks %s, the run had %d" % (rec.get("ranks"), np))
+    if rec.get("step") != int(last["step"]):
+        fail("run.json: last step %s, diagnostics.csv ends at %s" % (rec.get("step"), last["step"]))
+    reason = rec.get("stop_reason", "")
+    given = {cmd[k]: cmd[k + 1] if k + 1 < len(cmd) else "" for k in range(1, len(cmd)) if cmd[k].startswith("-")}
+    if reason == "reached -time_max_steps":
+        ok = int(given.get("-time_max_steps", rec["step"])) == rec["step"]
+    elif reason == "reached -time_final":
+        ok = "-time_final" not in given or rec["time"] >= float(given["-time_final"]) * (1 - 1e-12)
+    else:
+        ok = reason == "the collapse came to rest (-collapse_rest_speed)"
+    if not ok:
+        fail("run.json: stop reason '%s' at step %s, t = %s" % (reason, rec.get("step"), rec.get("time")))
+    options = rec.get("options", {})
+    for name in given:
+        if name[1:] in options and not options[name[1:]]["given"]:
+            fail("run.json: option %s given on the command line is not recorded as given" % name)
+    if "particles" in rec:
+        snaps = sorted(glob.glob(os.path.join(out, "particles_*.h5")))
+        count = len(h5py.File(snaps[-1], "r")["id"]) if snaps else rec["particles"]
+        if not rec["particles"] == rec["particles_at_start"] == count:
+            fail("run.json: %s particles at the end, %s at the start, %d in the last snapshot" %
+                 (rec["particles"], rec["particles_at_start"], count))
+    for key in ("kinetic_energy", "particle_kinetic_energy"):
+        if key in last and abs(rec.get(key, float("nan")) - float(last[key])) > 1e-9 * abs(float(last[key])):
+            fail("run.json: %s %s, diagnostics.csv's last row %s" % (key, rec.get(key), last[key]))
+    print("run.json: %d ranks, step %d, %s" % (np, rec["step"], reason))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--dir", required=True)
     ap.add_argument("--expect", action="append", default=[])
     ap.add_argument("--steps")
+    ap.add_argument("--anchor", action="append", default=[])
     ap.add_argument("cmd", nargs=argparse.REMAINDER)
     a = ap.parse_args()
     cmd = a.cmd[1:] if a.cmd and a.cmd[0] == "--" else a.cmd
     shutil.rmtree(a.dir, ignore_errors=True)
-    run = ["mpirun", "-n", str(a.np), "--oversubscribe"] + cmd + ["-output_dir", a.dir]
+    launcher = ["mpirun", "-n", str(a.np), "--oversubscribe"] if a.np > 1 else []  # one rank: a singleton, no launcher to tear down
+    run = launcher + cmd + ["-output_dir", a.dir]
     r = subprocess.run(run, capture_output=True, text=True)
     if r.returncode != 0:
         print(r.stdout, r.stderr)
@@ -89,6 +128,7 @@ def main():
             fail("diagnostics.csv rows at steps %s, expected %s" % (steps, a.steps))
     n = check_fields(a.dir)
     check_collapse(a.dir)
+    check_run_record(a.dir, a.np, cmd, last)
     for e in a.expect:
         col, rest = e.split("=")
         value, tol = (float(x) for x in rest.split(":"))
@@ -101,6 +141,11 @@ def main():
         print("%s = %.10g (reference %.10g, relative difference %.2e, tolerance %.0e)" % (col, got, value, rel, tol))
         if rel > tol:
             fail("%s differs from its reference" % col)
+    for anchor in a.anchor:
+        script, *rest = anchor.split()
+        r = subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(os.path.abspath(__file__)), script)] + rest + [a.dir])
+        if r.returncode != 0:
+            fail("the physics anchor %s failed" % anchor)
     print("ok: %d steps, %d field snapshots" % (len(rows), n))
 
 

@@ -22,7 +22,8 @@ double minDistanceRatio(const std::vector<ParticleRecord>& p)  // min |x_i - x_j
   return m;
 }
 
-std::string tempPath(const char* name) { return "/tmp/vp_test_" + std::to_string(getpid()) + "_" + name; }
+// Under the test's working folder (the build tree).
+std::string tempPath(const char* name) { return "scratch_particle_input_" + std::to_string(getpid()) + "_" + name; }
 
 } // namespace
 

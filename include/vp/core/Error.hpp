@@ -43,8 +43,8 @@ public:
 [[noreturn]] void failOption(const std::string& option, const std::string& what);
 // Throws InputError("option <option>: <what>, got <value>").
 [[noreturn]] void failOption(const std::string& option, const std::string& what, double value);
-// A number as the user would write it (for error messages).
-std::string formatNumber(double v);
+// A number as the user would write it (6 significant digits for error messages; more for records).
+std::string formatNumber(double v, int digits = 6);
 
 } // namespace vp
 

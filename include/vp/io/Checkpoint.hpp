@@ -31,7 +31,7 @@ struct RunState {
 // the pressure solutions the next solves' starts are fitted from (cellDM, oldest first; SolutionHistory.hpp).
 struct FluidState {
   Vec velocity, pressure, convectionOld, pressureIncrement, velocityIncrement;
-  Vec velocityIncrementOld;  // optional (null: not written; absent from checkpoints before 2026-11-25)
+  Vec velocityIncrementOld;  // optional (null: not written; absent from the oldest checkpoints)
   std::vector<Vec> pressureHistory;
 };
 
