@@ -82,6 +82,7 @@ int runCase(MPI_Comm comm)
 {
   vp::RunConfig cfg = vp::RunConfig::read();
   cfg.validate(comm);
+  cfg.resolveDefaults(comm);
   vp::Simulation sim(comm, cfg);
   vp::checkUnknownOptions(comm, cfg.allowUnknownOptions);
   vp::checkOutputDir(comm, cfg.main.output.dir, cfg.main.checkpoint.restart, cfg.main.output.overwrite);

@@ -1,4 +1,5 @@
 #include "vp/RunConfig.hpp"
+#include "vp/TimeStepControl.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include <cmath>
@@ -33,12 +34,17 @@ std::string gigabytes(double b)
 
 } // namespace
 
-RunConfig::RunConfig(const Config& c) : RunConfig(read()) { main = c; }
+RunConfig::RunConfig(const Config& c) : RunConfig(read())
+{
+  main = c;
+  resolveDefaults();
+}
 
 RunConfig RunConfig::read()
 {
   RunConfig r;
   r.main = Config::read();
+  r.collapse = CollapseConfig::read();
   r.particles = ParticleConfig::read();
   r.penalization = PenalizationConfig::read();
   r.solvers = readSolverOptions();
@@ -51,8 +57,12 @@ RunConfig RunConfig::read()
 void RunConfig::validate(MPI_Comm comm) const
 {
   main.validate();
+  collapse.validate(particles.any());
   particles.validate();
   penalization.validate();
+  int ranks;
+  MPI_Comm_size(comm, &ranks);
+  solvers.validate(ranks, main.grid.n[2], penalization.weightedProjection && particles.any() && !main.fluid.off);
   if (main.fluid.off && !particles.any())
     failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
   if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
@@ -63,6 +73,17 @@ void RunConfig::validate(MPI_Comm comm) const
     failOption("-dem_drag_viscosity", "is for DEM-only runs (-fluid_off); with the fluid on the resolved flow exerts the drag");
   if (main.fluid.off && !main.output.probes.empty()) failOption("-probe", "pressure probes need the fluid (not with -fluid_off)");
   if (memoryCheck) checkMemory(comm);
+}
+
+void RunConfig::resolveDefaults(MPI_Comm comm)
+{
+  if (particles.any() && !particles.contact.stiffnessGiven()) {
+    // Only coupled runs get here (DEM-only runs must give one): a contact resolved over ten steps.
+    particles.contact.tc = 10 * TimeStepControl(main, true).bound(0);
+    if (comm != MPI_COMM_NULL)
+      PetscPrintf(comm, "vpsolve: no contact stiffness given: -contact_tc %g s, ten times the first fluid step (docs/particles.md)\n",
+                  particles.contact.tc);
+  }
 }
 
 void RunConfig::checkMemory(MPI_Comm comm) const

@@ -5,7 +5,11 @@
 #include "vp/coupling/HydroForce.hpp"
 #include "vp/fluid/AnalyticFlow.hpp"
 #include "vp/grid/Boundary.hpp"
+#include "vp/io/CollapseMonitor.hpp"
+#include "vp/io/Diagnostics.hpp"
 #include "vp/io/OutputDir.hpp"
+#include "vp/io/ParticleTracker.hpp"
+#include "vp/io/Probes.hpp"
 #include "vp/io/RunRecord.hpp"
 #include <algorithm>
 #include <cmath>
@@ -29,7 +33,8 @@ std::string hms(double seconds)
 } // namespace
 
 Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
-  : cfg_(rc.main), grid_(comm, cfg_.grid, cfg_.bc), particleCfg_(rc.particles),
+  : cfg_(rc.main), grid_(comm, cfg_.grid, cfg_.bc), particleCfg_(rc.particles), collapseCfg_(rc.collapse),
+    stepControl_(cfg_, particleCfg_.any()),
     snapshots_(cfg_.output.every, cfg_.output.dt, 0), checkpointSchedule_(cfg_.checkpoint.every, cfg_.checkpoint.dt, cfg_.checkpoint.dt),
     guard_(comm, cfg_)
 {
@@ -44,12 +49,6 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
                                    : "the checkpoint holds no particles, but particle options are given");
     compareSetup(*restart);
   }
-  if (particleCfg_.any() && !particleCfg_.contact.stiffnessGiven()) {
-    // Only coupled runs get here (DEM-only runs must give one): a contact resolved over ten steps.
-    particleCfg_.contact.tc = 10 * stepBound(0);
-    PetscPrintf(comm, "vpsolve: no contact stiffness given: -contact_tc %g s, ten times the first fluid step (docs/particles.md)\n",
-                particleCfg_.contact.tc);
-  }
   if (particleCfg_.any() && !cfg_.fluid.off) {
     penalization_ = std::make_unique<Penalization>(grid_, rc.penalization, cfg_.fluid.rho, cfg_.fluid.nu());
     particleCfg_.maskSupport = penalization_->support();
@@ -58,8 +57,7 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restart->particles(), true);
   else if (particleCfg_.any())
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
-  if (cfg_.output.collapse && !dem_) failOption("-collapse_monitor", "measures a granular collapse: the case has no particles");
-  fluid_ = std::make_unique<Projection>(grid_, cfg_, penalization_ && rc.penalization.weightedProjection);
+  fluid_ = std::make_unique<Projection>(grid_, cfg_, rc.solvers, penalization_ && rc.penalization.weightedProjection);
   if (restart)
     restore(*restart);
   else {
@@ -90,12 +88,12 @@ void Simulation::openOutputs()
   const double resumeStep = restart_ ? step_ : -1, resumeTime = restart_ ? time_ : -1;
   if (dem_) {
     particleWriter_ = std::make_unique<ParticleWriter>(comm, dir);
-    tracker_ = std::make_unique<ParticleTracker>(comm, dir, particleCfg_, dem_->particles(), resumeTime);
+    monitors_.push_back(std::make_unique<ParticleTracker>(comm, dir, particleCfg_, dem_->particles(), resumeTime));
   }
-  diagnostics_ = std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, resumeStep);
   if (!cfg_.output.probes.empty() && !cfg_.fluid.off)
-    probes_ = std::make_unique<Probes>(grid_, cfg_.output.probes, dir, restart_ ? time_ : -1);
-  if (cfg_.output.collapse) collapse_ = std::make_unique<CollapseMonitor>(grid_, dir, restart_ ? time_ : -1);
+    monitors_.push_back(std::make_unique<Probes>(grid_, cfg_.output.probes, dir, resumeTime));
+  if (collapseCfg_.on) monitors_.push_back(std::make_unique<CollapseMonitor>(grid_, collapseCfg_, dir, resumeTime));
+  monitors_.push_back(std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, cfg_.fluid.rho, resumeStep));
   if (restart_) {
     fields_->resume(restart_->fieldSnapshots);
     if (particleWriter_) particleWriter_->resume(restart_->particleSnapshots);
@@ -169,7 +167,7 @@ void Simulation::checkpoint()
 {
   if (!checkpoints_) return;
   StageScope stage(Stage::IO);
-  if (tracker_) tracker_->flush();  // the time series hold every row up to the checkpoint
+  for (auto& m : monitors_) m->flush();  // the time series hold every row up to the checkpoint
   checkpointSchedule_.done(step_, time_);
   const double particles = dem_ ? 60.0 * 8 * dem_->diagnostics().particles : 0;
   requireSpace(grid_.comm(), cfg_.output.dir, 11.0 * 8 * grid_.cells() + particles, "the checkpoint of step " + std::to_string(step_));
@@ -189,57 +187,9 @@ void Simulation::checkpoint()
 
 Simulation::~Simulation() = default;
 
-double Simulation::particleRate() const
-{
-  if (!dem_) return 0;
-  const ParticleStore& s = dem_->particles();
-  double rate = 0;
-  for (std::size_t i = 0; i < s.nOwned; ++i)
-    for (int c = 0; c < 3; ++c) rate = std::max(rate, (std::fabs(s.v[i][c]) + norm(s.w[i]) * s.radius[i]) / grid_.h(c));
-  double global = 0;
-  MPI_Allreduce(&rate, &global, 1, MPI_DOUBLE, MPI_MAX, grid_.comm());
-  return global;
-}
-
-double Simulation::stepBound(double rate) const
-{
-  if (cfg_.time.dt > 0) return std::min(cfg_.time.dt, cfg_.time.final);
-  const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
-  // Without -time_dt_max: the viscous time of a cell, and at least ten steps over the run (a flow
-  // at rest has no other bound).
-  const double dt = cfg_.time.dtMax > 0 ? cfg_.time.dtMax : std::min(hmin * hmin / cfg_.fluid.nu(), 0.1 * cfg_.time.final);
-  return std::min({dt, motionStep(cfg_.time.cfl, rate), cfg_.time.final});
-}
-
-double Simulation::motionStep(double cfl, double rate) const
-{
-  double dt = std::numeric_limits<double>::infinity();
-  // Moving walls count too: they set the flow in motion from rest.
-  for (int f = 0; f < 6; ++f)
-    for (int c = 0; c < 3; ++c) rate = std::max(rate, std::fabs(wallVelocity(cfg_.bc, f)[c]) / grid_.h(c));
-  if (rate > 0) dt = cfl / rate;
-  // Particles released from rest: a step may not let gravity move them more than cfl cells.
-  const double g = norm(cfg_.gravity), hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
-  if (particleCfg_.any() && g > 0) dt = std::min(dt, std::sqrt(2 * cfl * hmin / g));
-  return dt;
-}
-
 double Simulation::nextDt() const
 {
-  double dt;
-  if (cfg_.time.dt > 0)
-    dt = cfg_.time.dt;
-  else if (cfg_.fluid.off)  // DEM only: the step is -dem_substeps stable DEM steps.
-    dt = dem_->suggestedStep() * particleCfg_.substeps;
-  else {
-    dt = stepBound(std::max(fluid_->stats().maxRate, particleRate()));
-    // The saturated lubrication is an explicit dashpot in the DEM sub-steps.
-    if (dem_) dt = std::min(dt, dem_->lubricationStepLimit());
-  }
-  const double left = cfg_.time.final - time_;
-  // Land on -time_final exactly instead of leaving a sliver of a step.
-  if (dt > left || left - dt < 1e-9 * dt) dt = left;
-  return dt;
+  return stepControl_.next(time_, fluid_->stats().maxRate, dem_.get(), grid_.comm());
 }
 
 void Simulation::buildMask(double dt)
@@ -248,7 +198,8 @@ void Simulation::buildMask(double dt)
   dem_->syncGhosts();
   // lambda's floor: 20 / dt of the step at CFL 0.5 that the motion allows, the largest so far (a
   // stiffness that does not follow the step taken, nor change within a collision: docs/coupling.md).
-  penalizationFloor_ = std::max(penalizationFloor_, 20 / motionStep(0.5, std::max(fluid_->stats().maxRate, particleRate())));
+  const double rate = std::max(fluid_->stats().maxRate, stepControl_.particleRate(dem_.get(), grid_.comm()));
+  penalizationFloor_ = std::max(penalizationFloor_, 20 / stepControl_.motionStep(0.5, rate));
   penalization_->build(dem_->particles(), dt, penalizationFloor_);
 }
 
@@ -298,9 +249,7 @@ int Simulation::run()
   // A restart continues the previous run's outputs: its snapshots and tracked-particle rows are written.
   if (!restart_) {
     if (snapshots_.on()) output();
-    if (tracker_) tracker_->record(dem_->particles(), time_);
-    if (probes_) probes_->record(time_, fluid_->pressure());
-    if (collapse_) collapse_->record(time_, dem_->particles());
+    for (auto& m : monitors_) m->start(view());
   }
   restart_.reset();
   std::string stop;
@@ -330,7 +279,7 @@ int Simulation::run()
     if (!v.problem.empty()) stopOnFailure(v.problem, loopStart, true);
     if (cfg_.output.monitorEvery > 0 && step_ % cfg_.output.monitorEvery == 0) {
       monitor(dt);
-      if (tracker_) tracker_->flush();  // a running case's particle_<id>.csv can be followed too
+      for (auto& m : monitors_) m->flush();  // a running case's particle_<id>.csv can be followed too
     }
     if (snapshots_.due(step_, time_)) output();
     if (checkpointSchedule_.due(step_, time_)) checkpoint();
@@ -343,18 +292,17 @@ int Simulation::run()
       stop = "reached -time_wall_limit";
       break;
     }
-    if (collapse_ && collapse_->atRest(cfg_.output.restSpeed, cfg_.output.restWindow)) {
-      stop = "the collapse came to rest (-collapse_rest_speed)";
-      break;
-    }
+    for (auto& m : monitors_)
+      if (stop.empty()) stop = m->stopRequest();
+    if (!stop.empty()) break;
   }
   loopWall_ = MPI_Wtime() - loopStart;
   if (recordedStep_ != step_ && step_ > firstStep_) record();  // the time series end with the final state
   if (snapshots_.lastStep() != step_) output();  // always the final state
   const bool early = status != 0 || stop == "reached -time_wall_limit";
   if ((checkpointSchedule_.on() || early) && checkpointSchedule_.lastStep() != step_) checkpoint();
-  if (tracker_) tracker_->flush();
-  if (collapse_) collapse_->writeDeposit(dem_->particles());
+  for (auto& m : monitors_) m->flush();
+  for (auto& m : monitors_) m->finish(view());
   finish(stop);
   return status;
 }
@@ -373,12 +321,19 @@ void Simulation::stopOnFailure(const std::string& problem, double loopStart, boo
 void Simulation::record()
 {
   recordedStep_ = step_;
-  if (tracker_) tracker_->record(dem_->particles(), time_);
-  if (probes_) probes_->record(time_, fluid_->pressure());
-  if (collapse_) collapse_->record(time_, dem_->particles());
-  if (diagnostics_)
-    diagnostics_->record(step_, time_, fluid_->previousDt(), last_, fluid_->stats(), cfg_.fluid.rho, MPI_Wtime() - wallStart_,
-                         dem_.get());
+  for (auto& m : monitors_) m->record(view());
+}
+
+RunView Simulation::view() const
+{
+  RunView v;
+  v.step = step_;
+  v.time = time_;
+  v.wallTime = MPI_Wtime() - wallStart_;
+  v.fluid = fluid_.get();
+  v.solvers = &last_;
+  v.dem = dem_.get();
+  return v;
 }
 
 void Simulation::output()

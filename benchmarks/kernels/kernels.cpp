@@ -78,7 +78,7 @@ int main(int argc, char** argv)
     VP_CALL(PetscRandomCreate(PETSC_COMM_WORLD, &rnd));
     for (Vec v : {uL, N, L, a, b, div, phiL}) VP_CALL(VecSetRandom(v, rnd));
     const double cells = double(g.cells());
-    vp::DiffusionSolver helmholtz(g, c.bc);
+    vp::DiffusionSolver helmholtz(g, c.bc, vp::readSolverOptions().viscousOperator);
     helmholtz.setOperator(0.1 * g.h(0) * g.h(0), nullptr);
     struct Row {
       const char* name;

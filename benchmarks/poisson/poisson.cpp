@@ -21,7 +21,7 @@ int main(int argc, char** argv)
     vp::Grid grid(PETSC_COMM_WORLD, cfg.grid, cfg.bc);
     MPI_Barrier(PETSC_COMM_WORLD);
     double t0 = MPI_Wtime();
-    vp::PressureSolver solver(grid);  // assembles A and sets up the preconditioner
+    vp::PressureSolver solver(grid, vp::readSolverOptions());  // assembles A and sets up the preconditioner
     MPI_Barrier(PETSC_COMM_WORLD);
     const double setup = MPI_Wtime() - t0;
     Vec b, rhs, x;

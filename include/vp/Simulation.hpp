@@ -7,16 +7,14 @@
 // (docs/architecture.md, run lifecycle).
 #include "vp/RunConfig.hpp"
 #include "vp/RunGuard.hpp"
+#include "vp/TimeStepControl.hpp"
 #include "vp/coupling/Penalization.hpp"
 #include "vp/fluid/Projection.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/io/Checkpoint.hpp"
-#include "vp/io/Diagnostics.hpp"
 #include "vp/io/FieldWriter.hpp"
-#include "vp/io/ParticleTracker.hpp"
+#include "vp/io/Monitor.hpp"
 #include "vp/io/ParticleWriter.hpp"
-#include "vp/io/CollapseMonitor.hpp"
-#include "vp/io/Probes.hpp"
 #include "vp/io/Schedule.hpp"
 #include "vp/particles/DemSolver.hpp"
 #include <memory>
@@ -32,7 +30,7 @@ public:
   // health check throws RunFailure after writing a snapshot.
   int run();
   void advance(double dt);
-  double nextDt() const;  // from -time_dt, or CFL and -time_dt_max, clipped to -time_final
+  double nextDt() const;  // TimeStepControl::next from the current state
 
   double time() const { return time_; }
   int step() const { return step_; }
@@ -44,7 +42,8 @@ public:
 
 private:
   void openOutputs();
-  void record();      // diagnostics row and tracked particles of the step just taken
+  void record();      // every monitor's row of the step just taken
+  RunView view() const;  // what the monitors measure
   // A failed health check (snapshot: of the completed step) or step: summary and run.json, then
   // RunFailure (collective).
   [[noreturn]] void stopOnFailure(const std::string& problem, double loopStart, bool snapshot);
@@ -60,12 +59,6 @@ private:
   void penalize();
   void hydroForce(double dt);
   void buildMask(double dt);  // chi, u_s, theta from the particles' current state
-  double particleRate() const;  // max over particles of (|U_c| + |Omega| a) / h_c (collective)
-  // The step at `cfl` that moving walls, the CFL rate `rate` and gravity on particles allow (inf: none).
-  double motionStep(double cfl, double rate) const;
-  // The step -time_dt gives, or the bounds of the grid (CFL at this rate, viscous, -time_dt_max),
-  // the walls and gravity; also before the solvers exist (rate 0).
-  double stepBound(double rate) const;
   void monitor(double dt) const;
   void printSetup() const;
   // The summary lines, the stage table and run.json's end (stop reason, figures).
@@ -74,16 +67,17 @@ private:
   Config cfg_;
   Grid grid_;
   ParticleConfig particleCfg_;
+  CollapseConfig collapseCfg_;
+  TimeStepControl stepControl_;
   std::unique_ptr<Projection> fluid_;
   std::unique_ptr<FieldWriter> fields_;
-  std::unique_ptr<Diagnostics> diagnostics_;
-  std::unique_ptr<Probes> probes_;                 // -probe
-  std::unique_ptr<CollapseMonitor> collapse_;      // -collapse_monitor
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
   std::unique_ptr<Penalization> penalization_;     // particles in a fluid
   std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
-  std::unique_ptr<ParticleTracker> tracker_;
+  // The time series, tracked particles (with particles), probes (-probe), the collapse monitor
+  // (-collapse_monitor): each records the same steps (Monitor.hpp).
+  std::vector<std::unique_ptr<Monitor>> monitors_;
   std::unique_ptr<CheckpointWriter> checkpoints_;
   std::unique_ptr<RunState> restart_;              // the checkpoint's run state, until the outputs resume it
   Schedule snapshots_, checkpointSchedule_;

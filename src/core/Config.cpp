@@ -82,12 +82,6 @@ Config Config::read()
     const std::vector<double> probes = o.realList("-probe", "Pressure probes x,y,z[,x,y,z...] (m): probes.csv, one row per step");
     if (probes.size() % 3 && !optionsHelpMode()) failOption("-probe", "needs x,y,z per probe (a multiple of 3 values), got " + std::to_string(probes.size()));
     for (std::size_t k = 0; k + 2 < probes.size(); k += 3) c.output.probes.push_back({probes[k], probes[k + 1], probes[k + 2]});
-    c.output.collapse = o.flag("-collapse_monitor", false, "Granular collapse along +x from the low-x wall: front, 99th-percentile "
-                                                           "front and back-wall height (collapse.csv, one row per series step), "
-                                                           "deposit profile at the end (deposit.csv)");
-    c.output.restSpeed = o.real("-collapse_rest_speed", 0, "With -collapse_monitor: the run ends once the 99th-percentile front has "
-                                                          "moved slower than this (m/s) over the last -collapse_rest_window (0: never)");
-    c.output.restWindow = o.real("-collapse_rest_window", c.output.restWindow, "Time over which the front must stay at rest (s)");
   }
   {
     OptionGroup o("Checkpoint/restart", false);
@@ -149,9 +143,6 @@ void Config::validate() const
                                  ", " + formatNumber(grid.hi[d]) + "]");
   if (checkpoint.every < 0) failOption("-checkpoint_every", "must be >= 0 (0: no checkpoints), got " + std::to_string(checkpoint.every));
   if (!(checkpoint.dt >= 0)) failOption("-checkpoint_dt", "must be >= 0 (0: no checkpoints), got " + formatNumber(checkpoint.dt));
-  if (!(output.restSpeed >= 0)) failOption("-collapse_rest_speed", "must be >= 0 (0: never), got " + formatNumber(output.restSpeed));
-  if (!(output.restWindow > 0)) failOption("-collapse_rest_window", "must be > 0, got " + formatNumber(output.restWindow));
-  if (output.restSpeed > 0 && !output.collapse) failOption("-collapse_rest_speed", "needs -collapse_monitor (it watches the front)");
   if (!(time.wallLimit >= 0)) failOption("-time_wall_limit", "must be >= 0 (0: none), got " + formatNumber(time.wallLimit));
   if (!(health.cflMax > 0)) failOption("-health_cfl_max", "must be > 0, got " + formatNumber(health.cflMax));
   if (!(health.overlapMax > 0 && health.overlapMax <= 1)) failOption("-health_overlap_max", "must be in (0, 1], got " + formatNumber(health.overlapMax));

@@ -13,10 +13,9 @@
 
 namespace vp {
 
-DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc)
+DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op)
   : grid_(grid), bc_(bc), ghosts_(grid.faceSolveDM())
 {
-  const ViscousOperator op = readSolverOptions().viscousOperator;
   assembled_ = op == ViscousOperator::Assembled;
   fused_ = op == ViscousOperator::Fused;
   setOptionDefault("-velocity_ksp_type", "cg");

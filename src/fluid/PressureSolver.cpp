@@ -99,26 +99,16 @@ int mgLevels(const Grid& g, PetscInt coarse[3])
 
 } // namespace
 
-PressureSolver::PressureSolver(const Grid& grid, bool weighted) : grid_(grid)
+PressureSolver::PressureSolver(const Grid& grid, const SolverOptions& options, bool weighted) : grid_(grid)
 {
-  const SolverOptions options = readSolverOptions();
+  int size;
+  MPI_Comm_size(grid.comm(), &size);
+  options.validate(size, grid.n(2), weighted);  // again for solvers built in code (tests, benchmarks)
   const std::string& pcType = options.pressurePc;
   PetscBool set;
   registerFftPreconditioner();
-  if (pcType == "fft") {
-    int size;
-    MPI_Comm_size(grid.comm(), &size);
-    if (size > grid.n(2))
-      failOption("-pressure_pc_type", "fft splits the z axis into slabs, one z cell per rank at least: " +
-                                          std::to_string(size) + " ranks for " + std::to_string(grid.n(2)) +
-                                          " z cells; use at most " + std::to_string(grid.n(2)) +
-                                          " ranks or -pressure_pc_type hypre, pfmg or mg");
-  }
   // fft is an exact inverse: one application (preonly) is the solve.
-  const bool direct = !options.pressureKsp.empty() ? options.pressureKsp == KSPPREONLY : pcType == "fft";
-  if (weighted && direct)
-    failOption("-penalization_projection", "weighted needs an iterative pressure solve: the direct fft solve is exact for the "
-                                           "constant-coefficient equation only (use -pressure_pc_type hypre, pfmg or mg)");
+  const bool direct = options.directPressure();
   setOptionDefault("-pressure_ksp_type", direct ? KSPPREONLY : KSPCG);
   if (!direct) {
     setOptionDefault("-pressure_ksp_norm_type", "unpreconditioned");

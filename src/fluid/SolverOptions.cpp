@@ -26,4 +26,15 @@ SolverOptions readSolverOptions()
   return s;
 }
 
+void SolverOptions::validate(int ranks, int zCells, bool weightedProjection) const
+{
+  if (pressurePc == "fft" && ranks > zCells)
+    failOption("-pressure_pc_type", "fft splits the z axis into slabs, one z cell per rank at least: " + std::to_string(ranks) +
+                                        " ranks for " + std::to_string(zCells) + " z cells; use at most " + std::to_string(zCells) +
+                                        " ranks or -pressure_pc_type hypre, pfmg or mg");
+  if (weightedProjection && directPressure())
+    failOption("-penalization_projection", "weighted needs an iterative pressure solve: the direct fft solve is exact for the "
+                                           "constant-coefficient equation only (use -pressure_pc_type hypre, pfmg or mg)");
+}
+
 } // namespace vp

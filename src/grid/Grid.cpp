@@ -11,7 +11,7 @@ Grid::Grid(MPI_Comm comm, const GridConfig& g, const BoundaryConfig& bc) : comm_
     n_[d] = g.n[d];
     lo_[d] = g.lo[d];
     hi_[d] = g.hi[d];
-    h_[d] = (hi_[d] - lo_[d]) / n_[d];
+    h_[d] = g.spacing(d);
     periodic_[d] = bc.periodic(d);
     // Wall axes keep a ghost layer at the physical boundary, filled by Boundary::fill*.
     bt[d] = periodic_[d] ? DM_BOUNDARY_PERIODIC : DM_BOUNDARY_GHOSTED;

@@ -48,6 +48,52 @@ int particleColumnCount()
 
 const std::string kParticleColumns = particleColumns();
 const int kParticleCols = particleColumnCount();
+
+std::vector<std::string> split(const std::string& text)
+{
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    out.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+// The particle rows of a checkpoint (named by its particle_columns attribute) in this build's layout:
+// a column is found by its name, so a field added to ParticleFields.hpp reads from older checkpoints
+// with its default value (a new field needs no version change). Returns an error, or "".
+std::string toCurrentLayout(const std::string& fileColumns, hsize_t fileCols, std::vector<double>& rows)
+{
+  std::map<std::string, std::pair<int, int>> where;  // column name -> offset and width in a row
+  double defaults[256], *o = defaults;
+  const ParticleRecord blank;
+  forCheckpointFields([&](auto value, const char* cols) {
+    const int offset = static_cast<int>(o - defaults);
+    writeDoubles(blank.*value, o);
+    const std::vector<std::string> names = split(cols);
+    const int width = static_cast<int>(o - defaults) - offset, each = static_cast<int>(names.size()) == width ? 1 : width;
+    for (std::size_t k = 0; k < names.size(); ++k) where[names[k]] = {offset + static_cast<int>(k) * each, each};
+  });
+  std::vector<std::pair<int, int>> source;  // per file column name: offset in the file row, and where it goes
+  int at = 0;
+  for (const std::string& name : split(fileColumns)) {
+    const auto it = where.find(name);
+    if (it == where.end()) return "has the particle column " + name + ", unknown to this vpsolve (written by a newer version?)";
+    for (int k = 0; k < it->second.second; ++k) source.push_back({at + k, it->second.first + k});
+    at += it->second.second;
+  }
+  if (at != static_cast<int>(fileCols)) return "has particle rows of " + std::to_string(fileCols) + " values, its columns name " + std::to_string(at);
+  const std::size_t n = rows.size() / fileCols;
+  std::vector<double> out(n * kParticleCols);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::copy(defaults, defaults + kParticleCols, &out[i * kParticleCols]);
+    for (const auto& [from, to] : source) out[i * kParticleCols + to] = rows[i * fileCols + from];
+  }
+  rows.swap(out);
+  return "";
+}
 constexpr int kContactCols = 6;  // id, partner id, spring x, y, z, departure state (absent from the oldest files)
 // id, the Basset modes' x, y, z by mode, the velocity change of a contact under way (absent in the
 // dataset's first form: none); rows only for particles in a window (the dataset is absent from the
@@ -305,7 +351,12 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
       const std::string e = h5::readTable(file, name, *data, r, c);
       if (!e.empty()) error = "'" + path + "' " + e + " (damaged checkpoint)";
       else if (data == &contacts && r > 0 && c == kContactCols - 1) contactCols = kContactCols - 1;  // before the departure state
-      else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
+      else if (data == &rows) {
+        std::string names = kParticleColumns;  // the oldest checkpoints do not name them
+        h5::readAttribute(file, "particle_columns", names);
+        const std::string e2 = r > 0 ? toCurrentLayout(names, c, rows) : "";
+        if (!e2.empty()) error = "'" + path + "' " + e2;
+      } else if (r > 0 && c != cols) error = "'" + path + "' dataset " + name + " has " + std::to_string(c) + " columns, expected " + std::to_string(cols);
     }
     if (error.empty() && H5Lexists(file, kWindowDataset, H5P_DEFAULT) > 0) {
       const std::string e = h5::readTable(file, kWindowDataset, windows, r, c);

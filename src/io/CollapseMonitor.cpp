@@ -1,10 +1,35 @@
 #include "vp/io/CollapseMonitor.hpp"
+#include "vp/core/Error.hpp"
+#include "vp/core/Options.hpp"
+#include "vp/particles/DemSolver.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace vp {
 
-CollapseMonitor::CollapseMonitor(const Grid& grid, const std::string& dir, double resumeAfter) : grid_(grid), dir_(dir)
+CollapseConfig CollapseConfig::read()
+{
+  OptionGroup o("Granular collapse monitor", false);
+  CollapseConfig c;
+  c.on = o.flag("-collapse_monitor", false, "Granular collapse along +x from the low-x wall: front, 99th-percentile "
+                                            "front and back-wall height (collapse.csv, one row per series step), "
+                                            "deposit profile at the end (deposit.csv)");
+  c.restSpeed = o.real("-collapse_rest_speed", 0, "With -collapse_monitor: the run ends once the 99th-percentile front has "
+                                                  "moved slower than this (m/s) over the last -collapse_rest_window (0: never)");
+  c.restWindow = o.real("-collapse_rest_window", c.restWindow, "Time over which the front must stay at rest (s)");
+  return c;
+}
+
+void CollapseConfig::validate(bool particles) const
+{
+  if (!(restSpeed >= 0)) failOption("-collapse_rest_speed", "must be >= 0 (0: never), got " + formatNumber(restSpeed));
+  if (!(restWindow > 0)) failOption("-collapse_rest_window", "must be > 0, got " + formatNumber(restWindow));
+  if (restSpeed > 0 && !on) failOption("-collapse_rest_speed", "needs -collapse_monitor (it watches the front)");
+  if (on && !particles) failOption("-collapse_monitor", "measures a granular collapse: the case has no particles");
+}
+
+CollapseMonitor::CollapseMonitor(const Grid& grid, const CollapseConfig& cfg, const std::string& dir, double resumeAfter)
+  : grid_(grid), cfg_(cfg), dir_(dir)
 {
   csv_ = std::make_unique<CsvWriter>(grid.comm(), dir + "/collapse.csv",
                                      std::vector<std::string>{"time", "front", "front99", "height_back"}, resumeAfter);
@@ -55,15 +80,21 @@ CollapseState CollapseMonitor::measure(const ParticleStore& p) const
   return {v[0], v[1], v[2]};
 }
 
-void CollapseMonitor::record(double time, const ParticleStore& p)
+void CollapseMonitor::record(const RunView& run)
 {
-  const CollapseState c = measure(p);
-  csv_->row({time, c.front, c.front99, c.heightBack});
-  front99_.emplace_back(time, c.front99);
+  const CollapseState c = measure(run.dem->particles());
+  csv_->row({run.time, c.front, c.front99, c.heightBack});
+  front99_.emplace_back(run.time, c.front99);
 }
 
-bool CollapseMonitor::atRest(double speed, double window)
+std::string CollapseMonitor::stopRequest()
 {
+  return atRest() ? "the collapse came to rest (-collapse_rest_speed)" : "";
+}
+
+bool CollapseMonitor::atRest()
+{
+  const double speed = cfg_.restSpeed, window = cfg_.restWindow;
   if (speed <= 0 || front99_.empty()) return false;
   // Keep the rows of the last window and the one just before it, so that the window is covered.
   const double now = front99_.back().first;
@@ -77,9 +108,9 @@ bool CollapseMonitor::atRest(double speed, double window)
   return hi - lo < speed * window;
 }
 
-void CollapseMonitor::writeDeposit(const ParticleStore& p) const
+void CollapseMonitor::finish(const RunView& run)
 {
-  const Spheres s = gather(p);
+  const Spheres s = gather(run.dem->particles());
   CsvWriter csv(grid_.comm(), dir_ + "/deposit.csv", {"x", "h"});
   if (s.r.empty()) return;  // every rank but 0
   const double lo = grid_.lo(0), width = s.diameter;

@@ -1,4 +1,5 @@
 #include "vp/io/ParticleTracker.hpp"
+#include "vp/particles/DemSolver.hpp"
 #include "vp/io/CsvWriter.hpp"
 #include <cstdio>
 #include <vector>
@@ -60,9 +61,11 @@ ParticleTracker::ParticleTracker(MPI_Comm comm, std::string dir, const ParticleC
 
 ParticleTracker::~ParticleTracker() { flush(); }
 
-void ParticleTracker::record(const ParticleStore& s, double time)
+void ParticleTracker::record(const RunView& run)
 {
   if (!active()) return;
+  const ParticleStore& s = run.dem->particles();
+  const double time = run.time;
   std::vector<double> rows;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     if (!tracked(s.id[i])) continue;

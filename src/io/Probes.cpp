@@ -1,4 +1,5 @@
 #include "vp/io/Probes.hpp"
+#include "vp/fluid/Projection.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/grid/FieldArray.hpp"
 #include <cmath>
@@ -51,10 +52,10 @@ std::vector<double> Probes::sample(Vec pressure)
   return values;
 }
 
-void Probes::record(double time, Vec pressure)
+void Probes::record(const RunView& run)
 {
-  std::vector<double> row{time};
-  const std::vector<double> v = sample(pressure);
+  std::vector<double> row{run.time};
+  const std::vector<double> v = sample(run.fluid->pressure());
   row.insert(row.end(), v.begin(), v.end());
   if (csv_) csv_->row(row);
 }

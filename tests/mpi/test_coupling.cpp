@@ -195,7 +195,7 @@ TEST_CASE("Without particles a run is bitwise the fluid core's: the coupling cos
   REQUIRE(sim.particles() == nullptr);
   REQUIRE(sim.penalization() == nullptr);
   Grid grid(PETSC_COMM_WORLD, c.grid, c.bc);
-  Projection core(grid, c);
+  Projection core(grid, c, readSolverOptions());
   core.applyBoundaryConditions();
   for (int k = 0; k < 10; ++k) {
     const double dt = sim.nextDt();

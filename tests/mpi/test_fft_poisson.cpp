@@ -78,7 +78,7 @@ TEST_CASE("fft solves the 7-point Poisson problem exactly on its eigenfunctions"
   BoundaryConfig bc = axes(px, py, pz);
   Grid g(PETSC_COMM_WORLD, box(12, 10, 6), bc);
   PressureOptions opts("fft");
-  PressureSolver ps(g);
+  PressureSolver ps(g, readSolverOptions());
   Vec phi, b, x;
   VP_CALL(DMCreateGlobalVector(g.cellDM(), &phi));
   VP_CALL(VecDuplicate(phi, &b));
@@ -109,10 +109,10 @@ TEST_CASE("fft and BoomerAMG give the same pressure", "[mpi][fft]")
   VP_CALL(VecSet(xAmg, 0));
   {
     PressureOptions opts("fft");
-    PressureSolver(g).solve(b, xFft, 0);
+    PressureSolver(g, readSolverOptions()).solve(b, xFft, 0);
   }
   PetscOptionsSetValue(nullptr, "-pressure_ksp_rtol", "1e-12");
-  PressureSolver(g).solve(b2, xAmg, 0);  // the default, CG + BoomerAMG, to near round-off
+  PressureSolver(g, readSolverOptions()).solve(b2, xAmg, 0);  // the default, CG + BoomerAMG, to near round-off
   PetscOptionsClearValue(nullptr, "-pressure_ksp_rtol");
   // Both have the constant mode removed: compare after subtracting the means.
   PetscScalar mean[2];
@@ -134,7 +134,7 @@ TEST_CASE("fft with more ranks than z slabs is refused, naming the option", "[mp
   Grid g(PETSC_COMM_WORLD, box(12, 12, 1), axes(false, false, true));
   PressureOptions opts("fft");
   try {
-    PressureSolver ps(g);
+    PressureSolver ps(g, readSolverOptions());
     FAIL("accepted " << size << " ranks for 1 z slab");
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("-pressure_pc_type") != std::string::npos);

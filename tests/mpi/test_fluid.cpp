@@ -78,7 +78,7 @@ TEST_CASE("div of grad equals minus the assembled Poisson matrix", "[mpi][operat
 {
   Config c = mixedBox();
   Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
-  PressureSolver ps(g);
+  PressureSolver ps(g, readSolverOptions());
   Vec phi, phiL, grad, gradL, div, Aphi;
   VP_CALL(DMCreateGlobalVector(g.cellDM(), &phi));
   VP_CALL(VecSetRandom(phi, nullptr));
@@ -191,7 +191,7 @@ TEST_CASE("the viscous operator equals the face Laplacian with its wall ghost ru
   Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
   const std::string kind = GENERATE(std::string("fused"), std::string("shell"), std::string("assembled"));
   VP_CALL(PetscOptionsSetValue(nullptr, "-velocity_operator", kind.c_str()));
-  DiffusionSolver ds(g, c.bc);
+  DiffusionSolver ds(g, c.bc, readSolverOptions().viscousOperator);
   VP_CALL(PetscOptionsClearValue(nullptr, "-velocity_operator"));
   CHECK(ds.assembled() == (kind == "assembled"));
   Vec u, uL, N, L, theta, Au, expect;
@@ -281,7 +281,7 @@ TEST_CASE("the fused viscous CG solves what PETSc's CG + Jacobi solves", "[mpi][
   const char* kinds[2] = {"fused", "shell"};
   for (int k = 0; k < 2; ++k) {
     VP_CALL(PetscOptionsSetValue(nullptr, "-velocity_operator", kinds[k]));
-    DiffusionSolver ds(g, c.bc);
+    DiffusionSolver ds(g, c.bc, readSolverOptions().viscousOperator);
     VP_CALL(PetscOptionsClearValue(nullptr, "-velocity_operator"));
     CHECK(ds.fused() == (k == 0));
     VP_CALL(VecDuplicate(r, &x[k]));
@@ -460,7 +460,7 @@ TEST_CASE("the pressure start fitted from earlier solutions", "[mpi][projection]
 {
   Config c = mixedBox();
   Grid g(PETSC_COMM_WORLD, c.grid, c.bc);
-  PressureSolver ps(g);
+  PressureSolver ps(g, readSolverOptions());
   Mat A = ps.matrix();
   Vec x[4], b, start, want;
   PetscRandom random;  // one generator: VecSetRandom(v, nullptr) would repeat the same values
@@ -544,7 +544,7 @@ void fillTheta(const Grid& g, Vec theta, double c, double big = 0, double r = 0)
 // One predictor + projection from the same lid-driven state; returns the velocity and the pressure.
 std::pair<Vec, Vec> penalizedStep(const Grid& g, const Config& c, bool weighted, Vec theta, Vec thetaUs, int steps)
 {
-  Projection fluid(g, c, weighted);
+  Projection fluid(g, c, readSolverOptions(), weighted);
   fluid.applyBoundaryConditions();
   for (int s = 0; s < steps; ++s) {
     fluid.predict(0.01, theta, thetaUs);
@@ -632,7 +632,7 @@ TEST_CASE("the weighted projection completes the implicit penalized step", "[mpi
     // one by 1/(1 + theta) of it: the ball stays at rest to the penalization's own error.
     CHECK(leak0 > 1e-3 * un);
     CHECK(leak1 < 1e-2 * leak0);
-    Projection probe(g, c, true);  // divergence of the weighted result, through the stats of a copy
+    Projection probe(g, c, readSolverOptions(), true);  // divergence of the weighted result, through the stats of a copy
     VP_CALL(VecCopy(u1, probe.velocity()));
     const auto& st = probe.finishStep();
     const double h = 0.1;

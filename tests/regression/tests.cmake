@@ -275,6 +275,11 @@ vp_restart(pair_departure 2 --restart-np 2 --steps 40 --at 30 --tol 0 -- ${VP_PA
 # enters the history force when the contact ends, travels with the checkpoint (left out of it, the
 # continuation differs).
 vp_restart(pair_in_contact 2 --restart-np 2 --steps 40 --at 12 --tol 0 -- ${VP_PAIR_IMPACT})
+# Checkpoint particle columns are read by name: reordered (bitwise), one field missing (its default),
+# an unknown column (refused).
+add_test(NAME checkpoint_named_columns
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_checkpoint_columns.py $<TARGET_FILE:vpsolve> ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(checkpoint_named_columns PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
 vp_bad_input(checkpoint_every 1 "option -checkpoint_every: must be >= 0 \\(0: no checkpoints\\), got -5" -checkpoint_every -5)
 vp_bad_input(checkpoint_keep 1 "option -checkpoint_keep: must be >= 1, got 0" -checkpoint_keep 0)
 vp_bad_input(restart_not_checkpoint 1 "option -restart: '.*taylor_green.opts' is not an HDF5 file"

@@ -1,9 +1,9 @@
 // Harada point-particle model: its pieces (drag, image-series added mass, Basset quadrature,
 // contact) and the seed falling sphere.
 #include "vp/interactions/BassetHistory.hpp"
-#include "vp/interactions/Harada.hpp"
-#include "vp/interactions/SchillerNaumann.hpp"
-#include "vp/interactions/WallAddedMass.hpp"
+#include "harada/Harada.hpp"
+#include "harada/SchillerNaumann.hpp"
+#include "harada/WallAddedMass.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>

@@ -17,6 +17,8 @@ struct GridConfig {
   std::array<int, 3> n{32, 32, 32};        // cells per axis
   std::array<double, 3> lo{0, 0, 0};       // domain box [m]
   std::array<double, 3> hi{1, 1, 1};
+
+  double spacing(int d) const { return (hi[d] - lo[d]) / n[d]; }  // uniform cell size along axis d [m]
 };
 
 // Boundary condition on each of the six faces, index 2*axis + side (side 0 = low, 1 = high).
@@ -57,9 +59,6 @@ struct OutputConfig {
   bool files = true;                       // false: no files at all (library use in tests)
   bool overwrite = false;                  // -output_overwrite: replace another run's outputs in dir
   std::vector<Vec3> probes;                // -probe x,y,z,...: pressure probes (probes.csv) [m]
-  bool collapse = false;                   // -collapse_monitor: collapse.csv and deposit.csv
-  double restSpeed = 0;                    // -collapse_rest_speed: stop once the front is at rest [m/s] (0: never)
-  double restWindow = 0.2;                 // -collapse_rest_window: over this long [s]
 };
 
 // Checks after every step that stop a run going wrong (docs/robustness.md).

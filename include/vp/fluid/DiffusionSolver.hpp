@@ -21,7 +21,7 @@ namespace vp {
 
 class DiffusionSolver {
 public:
-  DiffusionSolver(const Grid& grid, const BoundaryConfig& bc);
+  DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op);
   ~DiffusionSolver();
   DiffusionSolver(const DiffusionSolver&) = delete;
   DiffusionSolver& operator=(const DiffusionSolver&) = delete;

@@ -9,6 +9,7 @@
 // is assembled and the preconditioner set up once; an iterative solve starts from the fit of the
 // last -pressure_guesses solutions to its right-hand side (docs/fluid.md, initial guess).
 #include "vp/fluid/SolutionHistory.hpp"
+#include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/Grid.hpp"
 #include <memory>
 #include <petscksp.h>
@@ -18,7 +19,7 @@ namespace vp {
 class PressureSolver {
 public:
   // weighted: the operator will come from setFaceWeights (an iterative solver is required).
-  explicit PressureSolver(const Grid& grid, bool weighted = false);
+  PressureSolver(const Grid& grid, const SolverOptions& options, bool weighted = false);
   ~PressureSolver();
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;

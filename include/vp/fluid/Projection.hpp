@@ -24,7 +24,7 @@ struct StepStats {
 class Projection {
 public:
   // weighted: the projection of the penalized step (predict's theta), -penalization_projection weighted.
-  Projection(const Grid& grid, const Config& cfg, bool weighted = false);
+  Projection(const Grid& grid, const Config& cfg, const SolverOptions& solvers, bool weighted = false);
   ~Projection();
   Projection(const Projection&) = delete;
   Projection& operator=(const Projection&) = delete;

@@ -1,6 +1,7 @@
 #pragma once
-// The solver options vpsolve interprets itself (listed by -help, written to run.json); every other
-// -pressure_* / -velocity_* option goes to PETSc's KSP and PC objects unchanged (docs/fluid.md).
+// The solver options vpsolve interprets itself (listed by -help, written to run.json), read once
+// with the run's configuration and handed to the solvers; every other -pressure_* / -velocity_*
+// option goes to PETSc's KSP and PC objects unchanged (docs/fluid.md).
 #include <string>
 
 namespace vp {
@@ -12,6 +13,12 @@ struct SolverOptions {
   std::string pressureKsp;       // -pressure_ksp_type ("" : cg, or preonly with fft)
   int pressureGuesses = 5;       // -pressure_guesses: earlier solutions that form an iterative solve's start
   ViscousOperator viscousOperator = ViscousOperator::Fused;  // -velocity_operator
+
+  // One application of the preconditioner is the solve (fft, unless a Krylov method is given).
+  bool directPressure() const { return !pressureKsp.empty() ? pressureKsp == "preonly" : pressurePc == "fft"; }
+  // What the choices need of the run: the fft's slabs one z cell per rank at least, an iterative
+  // solve for the weighted projection (throws InputError).
+  void validate(int ranks, int zCells, bool weightedProjection) const;
 };
 
 SolverOptions readSolverOptions();

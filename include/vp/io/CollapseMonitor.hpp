@@ -11,6 +11,7 @@
 // rank 0 (a few numbers per sphere), so the values do not depend on the rank count.
 #include "vp/grid/Grid.hpp"
 #include "vp/io/CsvWriter.hpp"
+#include "vp/io/Monitor.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include <deque>
 #include <memory>
@@ -18,24 +19,36 @@
 
 namespace vp {
 
+// -collapse_monitor, -collapse_rest_speed, -collapse_rest_window.
+struct CollapseConfig {
+  bool on = false;          // collapse.csv and deposit.csv
+  double restSpeed = 0;     // stop once the 99th-percentile front is at rest [m/s] (0: never)
+  double restWindow = 0.2;  // over this long [s]
+
+  static CollapseConfig read();
+  // Ranges, and that the case has particles to watch (throws InputError).
+  void validate(bool particles) const;
+};
+
 struct CollapseState {
   double front = 0, front99 = 0, heightBack = 0;
 };
 
-class CollapseMonitor {
+class CollapseMonitor : public Monitor {
 public:
   // resumeAfter >= 0 (a restart): continue collapse.csv after the row of that time.
-  CollapseMonitor(const Grid& grid, const std::string& dir, double resumeAfter = -1);
+  CollapseMonitor(const Grid& grid, const CollapseConfig& cfg, const std::string& dir, double resumeAfter = -1);
 
   // The measurements (on every rank). Collective.
   CollapseState measure(const ParticleStore& p) const;
   // measure() and a row of collapse.csv. Collective.
-  void record(double time, const ParticleStore& p);
-  // True once the recorded 99th-percentile front has moved by less than speed * window over the
-  // last window of time (the same answer on every rank; a restart starts a new window).
-  bool atRest(double speed, double window);
+  void record(const RunView& run) override;
+  // With -collapse_rest_speed: a stop once the recorded 99th-percentile front has moved by less
+  // than speed * window over the last window of time (the same answer on every rank; a restart
+  // starts a new window).
+  std::string stopRequest() override;
   // deposit.csv: x of the bin centre, h. Collective.
-  void writeDeposit(const ParticleStore& p) const;
+  void finish(const RunView& run) override;
 
 private:
   struct Spheres {
@@ -44,7 +57,10 @@ private:
   };
   Spheres gather(const ParticleStore& p) const;
 
+  bool atRest();
+
   const Grid& grid_;
+  CollapseConfig cfg_;
   std::string dir_;
   std::unique_ptr<CsvWriter> csv_;
   std::deque<std::pair<double, double>> front99_;  // (time, front99) of the recorded rows, the last window

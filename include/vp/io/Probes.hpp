@@ -6,20 +6,21 @@
 #include "vp/core/Vec3.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/io/CsvWriter.hpp"
+#include "vp/io/Monitor.hpp"
 #include <memory>
 #include <vector>
 
 namespace vp {
 
-class Probes {
+class Probes : public Monitor {
 public:
   // resumeAfter >= 0 (a restart): continue probes.csv after the row of that time.
   Probes(const Grid& grid, std::vector<Vec3> points, const std::string& dir, double resumeAfter = -1);
 
   // The pressure at every probe (the same on every rank). Collective.
   std::vector<double> sample(Vec pressure);
-  // sample() and a row of probes.csv. Collective.
-  void record(double time, Vec pressure);
+  // sample() of the run's pressure and a row of probes.csv. Collective.
+  void record(const RunView& run) override;
 
 private:
   const Grid& grid_;

@@ -56,6 +56,7 @@ public:
   double suggestedStep() const;
   // Longest fluid step the lubrication dashpot allows with -dem_substeps (infinite without one).
   double lubricationStepLimit() const { return lubStableSubstep_ * pc_.substeps; }
+  int substeps() const { return pc_.substeps; }  // -dem_substeps
   ParticleExchange& exchange() { return *exchange_; }
   // Collective: ghosts get the owners' current x, v, omega, q (the last sub-step sends predicted
   // velocities); the fluid coupling builds its mask from them.

@@ -1,4 +1,4 @@
-#include "vp/interactions/WallAddedMass.hpp"
+#include "harada/WallAddedMass.hpp"
 #include <cmath>
 
 namespace vp {

@@ -4,7 +4,7 @@
 #include "vp/RunConfig.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
-#include "vp/interactions/Harada.hpp"
+#include "harada/Harada.hpp"
 #include <petscsys.h>
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
-#include "vp/interactions/Harada.hpp"
-#include "vp/interactions/SchillerNaumann.hpp"
-#include "vp/interactions/WallAddedMass.hpp"
+#include "harada/Harada.hpp"
+#include "harada/SchillerNaumann.hpp"
+#include "harada/WallAddedMass.hpp"
 #include <algorithm>
 #include <cmath>
 
