@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
-#include <limits>
 #include <map>
 #include <sstream>
 
@@ -395,12 +394,21 @@ void Simulation::finish(const std::string& stopReason)
                 "mean pressure iterations %.1f; kinetic energy %.6e J\n",
                 steps, time_, wall, wall / std::max(steps, 1), wall / std::max(steps, 1) / grid_.cells() * 1e6,
                 double(pressureIterationsTotal_) / std::max(steps, 1), cfg_.fluid.rho * fluid_->stats().kineticEnergy);
-  long particles = 0;
-  double particleKineticEnergy = 0;
+  RunEnd end;
+  end.stopReason = stopReason;
+  end.step = step_;
+  end.stepsThisRun = steps;
+  end.time = time_;
+  end.wallSeconds = wall;
+  end.loopSeconds = loopWall_;
+  end.fluid = !cfg_.fluid.off;
+  end.kineticEnergy = cfg_.fluid.rho * fluid_->stats().kineticEnergy;
   if (dem_) {
     const DemDiagnostics d = dem_->diagnostics();
-    particles = d.particles;
-    particleKineticEnergy = d.kineticEnergy;
+    end.particles = true;
+    end.particlesAtStart = particlesAtStart_;
+    end.particleCount = d.particles;
+    end.particleKineticEnergy = d.kineticEnergy;
     const double particleSteps = double(d.particles) * steps * particleCfg_.substeps;
     PetscPrintf(comm, "vpsolve: DEM %ld particles (%ld at the start of this run), %d x %d sub-steps, loop time %.3f s, "
                 "%.4g particle-steps/s, %zu neighbour-list rebuilds; particle kinetic energy %.6e J\n",
@@ -413,7 +421,6 @@ void Simulation::finish(const std::string& stopReason)
                 traffic[1] / 1e6);
   }
   // Stage timings: the slowest rank's seconds per stage.
-  std::string stages;
   PetscPrintf(comm, "vpsolve: stage timings (slowest rank)   seconds   %% of run    ms/step\n");
   for (int k = 0; k < static_cast<int>(Stage::Count); ++k) {
     double t = stageSeconds(static_cast<Stage>(k));
@@ -421,18 +428,11 @@ void Simulation::finish(const std::string& stopReason)
     if (t == 0) continue;
     PetscPrintf(comm, "vpsolve:   %-30s %9.3f %9.1f %11.3f\n", stageName(static_cast<Stage>(k)), t,
                 100 * t / std::max(wall, 1e-30), 1e3 * t / std::max(steps, 1));
-    stages += std::string(stages.empty() ? "" : ", ") + jsonString(stageName(static_cast<Stage>(k))) + ": " + formatNumber(t);
+    end.stageSeconds.emplace_back(stageName(static_cast<Stage>(k)), t);
   }
   if (!fields_) return;
-  std::string end = "\"stop_reason\": " + jsonString(stopReason) + ",\n  \"step\": " + std::to_string(step_) +
-                    ",\n  \"time\": " + formatNumber(time_) + ",\n  \"steps_this_run\": " + std::to_string(steps) +
-                    ",\n  \"wall_seconds\": " + formatNumber(wall) + ",\n  \"loop_seconds\": " + formatNumber(loopWall_) +
-                    ",\n  \"stage_seconds\": {" + stages + "}";
-  if (!cfg_.fluid.off) end += ",\n  \"kinetic_energy\": " + formatNumber(cfg_.fluid.rho * fluid_->stats().kineticEnergy, 10);
-  if (dem_) end += ",\n  \"particles_at_start\": " + std::to_string(particlesAtStart_) + ",\n  \"particles\": " + std::to_string(particles) +
-                   ",\n  \"particle_kinetic_energy\": " + formatNumber(particleKineticEnergy, 10);
   try {
-    writeRunRecord(comm, cfg_.output.dir, end);
+    writeRunRecord(comm, cfg_.output.dir, runEndJson(end));
   } catch (const std::runtime_error& e) {  // a full disk: the start record stays
     PetscPrintf(comm, "vpsolve: warning: %s\n", e.what());
   }

@@ -1,5 +1,5 @@
 #pragma once
-// The fluid step (docs/fluid.md, "Time step"): -time_dt, or the bounds of the grid (CFL at the
+// The fluid step (docs/fluid.md, the paragraph on dt): -time_dt, or the bounds of the grid (CFL at the
 // flow's and the particles' rate, the viscous time of a cell or -time_dt_max), moving walls, gravity
 // on particles released from rest and the explicit lubrication's limit, landing exactly on
 // -time_final; DEM-only runs take -dem_substeps stable DEM steps. Built from the configuration

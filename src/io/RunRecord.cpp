@@ -64,6 +64,21 @@ std::string runRecordJson(MPI_Comm comm, const std::string& end)
   return j + "\n}\n";
 }
 
+std::string runEndJson(const RunEnd& e)
+{
+  std::string stages;
+  for (const auto& [name, seconds] : e.stageSeconds) stages += std::string(stages.empty() ? "" : ", ") + jsonString(name) + ": " + formatNumber(seconds);
+  std::string j = "\"stop_reason\": " + jsonString(e.stopReason) + ",\n  \"step\": " + std::to_string(e.step) +
+                  ",\n  \"time\": " + formatNumber(e.time) + ",\n  \"steps_this_run\": " + std::to_string(e.stepsThisRun) +
+                  ",\n  \"wall_seconds\": " + formatNumber(e.wallSeconds) + ",\n  \"loop_seconds\": " + formatNumber(e.loopSeconds) +
+                  ",\n  \"stage_seconds\": {" + stages + "}";
+  if (e.fluid) j += ",\n  \"kinetic_energy\": " + formatNumber(e.kineticEnergy, 10);
+  if (e.particles)
+    j += ",\n  \"particles_at_start\": " + std::to_string(e.particlesAtStart) + ",\n  \"particles\": " + std::to_string(e.particleCount) +
+         ",\n  \"particle_kinetic_energy\": " + formatNumber(e.particleKineticEnergy, 10);
+  return j;
+}
+
 const std::string& runRecord()
 {
   // Rank 0's (host and date differ between ranks; parallel HDF5 needs one value everywhere).

@@ -5,6 +5,7 @@
 // The same record (without the end) is the attribute "vpsolve_run" of each HDF5 file.
 #include <mpi.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vp {
@@ -19,6 +20,21 @@ std::string runRecordJson(MPI_Comm comm, const std::string& end = "");
 const std::string& runRecord();
 // Writes <dir>/run.json on rank 0 (atomically: a temporary file renamed).
 void writeRunRecord(MPI_Comm comm, const std::string& dir, const std::string& end = "");
+
+// How a run ended, as run.json records it (docs/outputs.md).
+struct RunEnd {
+  std::string stopReason;
+  int step = 0, stepsThisRun = 0;
+  double time = 0, wallSeconds = 0, loopSeconds = 0;
+  std::vector<std::pair<std::string, double>> stageSeconds;  // the slowest rank's, stages that ran
+  bool fluid = false;                                        // the kinetic energy is recorded
+  double kineticEnergy = 0;                                  // [J]
+  bool particles = false;                                    // the particle figures are recorded
+  long particlesAtStart = 0, particleCount = 0;
+  double particleKineticEnergy = 0;                          // [J]
+};
+// The end's members for runRecordJson / writeRunRecord.
+std::string runEndJson(const RunEnd& e);
 
 // A JSON string literal.
 std::string jsonString(const std::string& s);
