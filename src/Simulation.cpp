@@ -248,7 +248,8 @@ int Simulation::run()
   // A restart continues the previous run's outputs: its snapshots and tracked-particle rows are written.
   if (!restart_) {
     if (snapshots_.on()) output();
-    for (auto& m : monitors_) m->start(view());
+    const RunView start = view();
+    for (auto& m : monitors_) m->start(start);
   }
   restart_.reset();
   std::string stop;
@@ -301,7 +302,8 @@ int Simulation::run()
   const bool early = status != 0 || stop == "reached -time_wall_limit";
   if ((checkpointSchedule_.on() || early) && checkpointSchedule_.lastStep() != step_) checkpoint();
   for (auto& m : monitors_) m->flush();
-  for (auto& m : monitors_) m->finish(view());
+  const RunView last = view();
+  for (auto& m : monitors_) m->finish(last);
   finish(stop);
   return status;
 }
@@ -320,7 +322,8 @@ void Simulation::stopOnFailure(const std::string& problem, double loopStart, boo
 void Simulation::record()
 {
   recordedStep_ = step_;
-  for (auto& m : monitors_) m->record(view());
+  const RunView now = view();
+  for (auto& m : monitors_) m->record(now);
 }
 
 RunView Simulation::view() const

@@ -125,9 +125,11 @@ def compare_snapshot(ref_file, got_file):
         oa, ob = order(a), order(b)
         worst = 0.0
         for name in a:
-            if not isinstance(a[name], h5py.Dataset) or not compared(name) and args.compare and name not in ("position", "velocity"):
+            # Across rank counts (--compare) the positions and velocities, and the columns named.
+            if not isinstance(a[name], h5py.Dataset) or not (compared(name) or name in ("position", "velocity")):
                 continue
-            x, y = np.array(a[name]), np.array(b[name]) if name in b else None
+            x = np.array(a[name])
+            y = np.array(b[name]) if name in b else None
             if y is None or x.shape != y.shape:
                 failures.append("%s: dataset %s missing or of another shape" % (got_file, name))
                 continue
