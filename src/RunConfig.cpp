@@ -84,6 +84,7 @@ void RunConfig::resolveDefaults(MPI_Comm comm)
       PetscPrintf(comm, "vpsolve: no contact stiffness given: -contact_tc %g s, ten times the first fluid step (docs/particles.md)\n",
                   particles.contact.tc);
   }
+  particles.resolveDefaults(main);
 }
 
 void RunConfig::checkMemory(MPI_Comm comm) const

@@ -11,6 +11,7 @@
 #include "vp/io/ParticleTracker.hpp"
 #include "vp/io/Probes.hpp"
 #include "vp/io/RunRecord.hpp"
+#include "vp/particles/ParticleCheckpoint.hpp"
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -39,9 +40,11 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
 {
   wallStart_ = MPI_Wtime();
   std::unique_ptr<CheckpointReader> restart;
+  std::vector<ParticleRecord> restartParticles;
   if (!cfg_.checkpoint.restart.empty()) {
     restart = std::make_unique<CheckpointReader>(comm, cfg_.checkpoint.restart, cfg_);
-    const std::size_t n = restart->particles().size();
+    restartParticles = loadParticles(*restart);
+    const std::size_t n = restartParticles.size();
     if ((n > 0) != particleCfg_.any())
       failOption("-restart", n > 0 ? "the checkpoint holds " + std::to_string(n) + " particles: give the original run's particle options "
                                      "too (the particles come from the checkpoint, the contact and lubrication options from the command line)"
@@ -53,7 +56,7 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     particleCfg_.maskSupport = penalization_->support();
   }
   if (restart && particleCfg_.any())
-    dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restart->particles(), true);
+    dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restartParticles, true);
   else if (particleCfg_.any())
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
   fluid_ = std::make_unique<Projection>(grid_, cfg_, rc.solvers, penalization_ && rc.penalization.weightedProjection);
@@ -130,19 +133,7 @@ void Simulation::compareSetup(const CheckpointReader& cp) const
 void Simulation::restore(const CheckpointReader& cp)
 {
   const RunState& r = cp.run();
-  FluidState f = fluidState();
-  f.velocityIncrementOld = fluid_->velocityIncrementOld();
-  fluid_->setIncrements(cp.loadFluid(f) ? 2 : r.dtOld > 0 ? 1 : 0);
-  if (SolutionHistory* h = fluid_->pressureSolver().history()) {
-    // The newest stored solutions, re-added in order: the history is then the uninterrupted run's.
-    std::vector<Vec> stored = cp.loadPressureHistory(fluid_->pressure());
-    for (std::size_t i = 0; i < stored.size(); ++i) {
-      if (stored.size() - i <= static_cast<std::size_t>(h->capacity())) h->add(stored[i]);
-      VecDestroy(&stored[i]);
-    }
-  }
-  fluid_->setPreviousDt(r.dtOld);
-  fluid_->finishStep();
+  fluid_->loadState(cp, r.dtOld);
   step_ = r.step;
   time_ = r.time;
   penalizationFloor_ = r.penalizationFloor;
@@ -151,15 +142,6 @@ void Simulation::restore(const CheckpointReader& cp)
   checkpointSchedule_.resume(step_, r.nextCheckpointTime > time_ ? r.nextCheckpointTime : time_ + cfg_.checkpoint.dt);
   restart_ = std::make_unique<RunState>(r);
   PetscPrintf(grid_.comm(), "vpsolve: restart from %s at step %d, t = %.6g s\n", cfg_.checkpoint.restart.c_str(), step_, time_);
-}
-
-FluidState Simulation::fluidState() const
-{
-  FluidState f{fluid_->velocity(), fluid_->pressure(), fluid_->convectionOld(), fluid_->pressureIncrement(),
-               fluid_->velocityIncrement(), fluid_->increments() == 2 ? fluid_->velocityIncrementOld() : nullptr, {}};
-  if (const SolutionHistory* h = fluid_->pressureSolver().history())
-    for (int i = 0; i < h->size(); ++i) f.pressureHistory.push_back(h->solution(i));
-  return f;
 }
 
 void Simulation::checkpoint()
@@ -180,8 +162,10 @@ void Simulation::checkpoint()
   r.penalizationFloor = penalizationFloor_;
   if (fields_) r.fieldSnapshots = fields_->snapshotList();
   if (particleWriter_) r.particleSnapshots = particleWriter_->snapshotList();
-  checkpoints_->write(grid_, cfg_.bc, r, fluidState(),
-                      dem_ ? dem_->ownedRecords() : std::vector<ParticleRecord>{});
+  checkpoints_->write(grid_, cfg_.bc, r, [&](StateWriter& w) {
+    fluid_->saveState(w);
+    if (dem_) dem_->saveState(w);
+  });
 }
 
 Simulation::~Simulation() = default;

@@ -53,7 +53,6 @@ private:
   void restore(const CheckpointReader& cp);
   // Refuses (or with -restart_allow_changes warns about) set-up options that differ from the checkpoint's.
   void compareSetup(const CheckpointReader& cp) const;
-  FluidState fluidState() const;  // the vectors a checkpoint holds
   // The penalization force on each particle from the predicted velocity, and the hydrodynamic
   // forces once the velocity is projected (dt = 0: only the fluid momentum, initial state).
   void penalize();

@@ -184,4 +184,31 @@ const ops::FieldStats& Projection::finishStep()
   return stats_;
 }
 
+namespace {
+const char* const kIncrementOld = "velocity_increment_old";
+}
+
+void Projection::saveState(StateWriter& w) const
+{
+  for (auto [name, v] : {std::pair<const char*, Vec>{"velocity", u_}, {"pressure", p_}, {"convection_old", Nold_},
+                         {"pressure_increment", psi_}, {"velocity_increment", du_}})
+    w.vector(name, v);
+  if (increments_ == 2) w.vector(kIncrementOld, duOld_);
+  if (const SolutionHistory* h = pressure_.history()) h->save(w);
+}
+
+void Projection::loadState(const StateReader& r, double previousDt)
+{
+  for (auto [name, v] : {std::pair<const char*, Vec>{"velocity", u_}, {"pressure", p_}, {"convection_old", Nold_},
+                         {"pressure_increment", psi_}, {"velocity_increment", du_}})
+    r.vector(name, v);
+  // Checkpoints older than the second increment, or written after one solve, hold one at most.
+  const bool two = r.has(kIncrementOld);
+  if (two) r.vector(kIncrementOld, duOld_);
+  increments_ = two ? 2 : previousDt > 0 ? 1 : 0;
+  if (SolutionHistory* h = pressure_.history()) h->load(r);
+  dtOld_ = previousDt;
+  finishStep();
+}
+
 } // namespace vp

@@ -3,6 +3,7 @@
 #include "vp/core/VecValues.hpp"
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace vp {
 
@@ -24,6 +25,8 @@ double dot(Vec a, Vec b)
   MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_SUM, comm);
   return s;
 }
+
+std::string storedName(int i) { return "pressure_history_" + std::to_string(i); }
 
 } // namespace
 
@@ -89,6 +92,25 @@ void SolutionHistory::start(Vec b, Vec x)
   for (int i = m - 1; i >= 0; --i)
     for (int j = i + 1; j < m; ++j) c[i] -= l[j * m + i] * c[j];
   VP_CALL(VecMAXPY(x, m, c.data(), x_.data()));
+}
+
+void SolutionHistory::save(StateWriter& w) const
+{
+  for (int i = 0; i < count_; ++i) w.vector(storedName(i), x_[i]);
+}
+
+void SolutionHistory::load(const StateReader& r)
+{
+  if (capacity_ == 0) return;
+  int stored = 0;
+  while (r.has(storedName(stored))) ++stored;
+  Vec v;
+  VP_CALL(VecDuplicate(x_[0], &v));
+  for (int i = std::max(0, stored - capacity_); i < stored; ++i) {
+    r.vector(storedName(i), v);
+    add(v);
+  }
+  VecDestroy(&v);
 }
 
 } // namespace vp

@@ -16,16 +16,17 @@ const char* lubModelName(LubModel m)
   }
 }
 
-void LubricationParams::complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax)
+void LubricationParams::resolveDefaults(double cellSize, bool coupled, double saturationFromRoughness)
 {
   // The resolved squeeze follows the exact Stokes resistance down to gaps of a fraction of a cell
-  // (docs/collisions.md, calibration): the correction starts there.
+  // (docs/collisions_calibration.md): the correction starts there.
   if (activation == 0 && activationCells == 0 && coupled) activationCells = kDefaultActivationCells;
   // The resolved shear force and torque follow theirs to smaller gaps still (same page).
   if (shearActivationCells == 0) shearActivationCells = std::min(activationCells, kDefaultShearActivationCells);
   gridGap_ = activationCells * cellSize;
   shearGridGap_ = shearActivationCells * cellSize;
   if (saturation == 0) saturation = saturationFromRoughness > 0 ? saturationFromRoughness : kDefaultSaturation;
+  resolved_ = true;
   if (model == LubModel::None) return;
   std::ostringstream msg;
   if (!(activation > 0 || activationCells > 0))
@@ -33,16 +34,24 @@ void LubricationParams::complete(double cellSize, bool coupled, double saturatio
         << " (DEM-only runs set -lub_activation or -lub_activation_cells)";
   else if (!(saturation > 0 && saturation < activation) && activation > 0)
     msg << "option -lub_saturation: must be in (0, -lub_activation = " << activation << "), got " << saturation;
-  else if (activation == 0 && !(saturation > 0 && saturation * rmax < gridGap_))
-    msg << "option -lub_saturation: the saturation gap " << saturation << " a must be > 0 and below the activation gap "
-        << "-lub_activation_cells = " << activationCells << " cells (" << gridGap_ << " m) for the largest radius "
-        << rmax << " m, got " << saturation;
+  else if (activation == 0 && !(saturation > 0))
+    msg << "option -lub_saturation: must be > 0, got " << saturation;
   else if (activation == 0 && !(shearActivationCells > 0 && shearActivationCells <= activationCells))
     msg << "option -lub_shear_activation_cells: must be in (0, -lub_activation_cells = " << activationCells
         << "], got " << shearActivationCells;
   else if (!(llcmRegion > 0 && std::isfinite(llcmRegion)))
     msg << "option -lub_llcm_r0: must be > 0, got " << llcmRegion;
   if (!msg.str().empty()) throw InputError(msg.str());
+}
+
+void LubricationParams::checkRadius(double rmax) const
+{
+  if (model == LubModel::None || activation > 0 || saturation * rmax < gridGap_) return;
+  std::ostringstream msg;
+  msg << "option -lub_saturation: the saturation gap " << saturation << " a must be below the activation gap "
+      << "-lub_activation_cells = " << activationCells << " cells (" << gridGap_ << " m) for the largest radius "
+      << rmax << " m, got " << saturation;
+  throw InputError(msg.str());
 }
 
 PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s)

@@ -2,7 +2,9 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/Logging.hpp"
 #include "vp/particles/Generators.hpp"
+#include "vp/particles/ParticleCheckpoint.hpp"
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <petscsys.h>
 #include <sstream>
@@ -31,6 +33,7 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
     gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off), drag_(pc.implicitDrag),
     resolvedInContact_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro)
 {
+  if (!pc.lubrication.resolved()) throw std::logic_error("DemSolver: ParticleConfig::resolveDefaults was not called");
   windowHistory_ = resolvedInContact_ != ContactHydro::Keep && pc.contact.hydroHistory;
   bassetScale_ = 6 * std::sqrt(M_PI * rhoFluid_ * mu_);
   for (int f = 0; f < 6; ++f) {
@@ -57,7 +60,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // Lubrication acts below the activation gap; it holds constant below the roughness gap, where
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
   const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
-  lub_.complete(hmin, hydro_, 2 * pc_.contact.roughness, rmax_);
+  lub_.checkRadius(rmax_);
   if (hydro_ && resolvedInContact_ == ContactHydro::Limit) departureGap_ = pc_.contact.departureCells * hmin;
   if (lub_.model != LubModel::None) {
     lubGap_ = std::max(lub_.activationGap(rmax_), departureGap_);  // pairs stay listed while they depart
@@ -85,16 +88,16 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   if (!restart) computeForces(0);
 }
 
-std::vector<ParticleRecord> DemSolver::ownedRecords()
+void DemSolver::saveState(StateWriter& w)
 {
   // Between rebuilds the springs live in the pair list; lend them to the histories.
   pairs_.exportHistory(store_);
-  std::vector<ParticleRecord> out;
+  std::vector<ParticleRecord> owned;
   for (std::size_t i = 0; i < store_.nOwned; ++i) {
-    out.push_back(store_.record(i));
+    owned.push_back(store_.record(i));
     store_.history[i].clear();
   }
-  return out;
+  saveParticles(w, owned);
 }
 
 bool DemSolver::needRebuild() const

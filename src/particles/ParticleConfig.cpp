@@ -3,6 +3,7 @@
 #include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -105,6 +106,12 @@ ParticleConfig ParticleConfig::read()
   c.contact = readContactOptions();
   c.lubrication = readLubricationOptions();
   return c;
+}
+
+void ParticleConfig::resolveDefaults(const Config& main)
+{
+  const double cell = std::min({main.grid.spacing(0), main.grid.spacing(1), main.grid.spacing(2)});
+  lubrication.resolveDefaults(cell, !main.fluid.off, 2 * contact.roughness);
 }
 
 void ParticleConfig::validate() const

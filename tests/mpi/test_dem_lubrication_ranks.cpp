@@ -18,7 +18,7 @@ TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, mo
   const double dt = 2e-6;
   auto run = [&](MPI_Comm comm) {
     Grid grid(comm, c.grid, c.bc);
-    DemSolver dem(grid, c, pc, p);
+    DemSolver dem(grid, c, resolved(c, pc), p);
     for (int k = 0; k < 5000; ++k) dem.advance(k * dt, dt);
     return gatherState(comm, dem.particles());
   };
@@ -65,7 +65,7 @@ TEST_CASE("Pair departure across ranks (-contact_hydro_departure, _history): bit
   // sphere 2 while it was in its window (modes non-zero: the contact, then the departure).
   auto run = [&](MPI_Comm comm, const std::vector<ParticleRecord>& p, int& departed, int& owners) {
     Grid grid(comm, c.grid, c.bc);
-    DemSolver dem(grid, c, pc, p);
+    DemSolver dem(grid, c, resolved(c, pc), p);
     int local = 0, owned2 = 0;
     for (int k = 0; k < 3000; ++k) {
       dem.advance(k * dt, dt);

@@ -16,7 +16,7 @@ std::vector<State> run(MPI_Comm comm, const Config& c, const ParticleConfig& pc,
                        double dt, int steps, bool* shared = nullptr)
 {
   Grid grid(comm, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, p);
+  DemSolver dem(grid, c, resolved(c, pc), p);
   if (shared) *shared = allRanks(comm, dem.particles().nOwned > 0);
   for (int k = 0; k < steps; ++k) dem.advance(k * dt, dt);
   return gatherState(comm, dem.particles());

@@ -28,7 +28,7 @@ TEST_CASE("Parallel particle snapshot and XDMF index", "[mpi][particles]")
   lattice.jitter = 0.5;
   lattice.seed = 1;
   Grid grid(comm, c.grid, c.bc);
-  DemSolver dem(grid, c, contactConfig(1e-3, 0.9, 0.3), latticeParticles(lattice, 1000));
+  DemSolver dem(grid, c, resolved(c, contactConfig(1e-3, 0.9, 0.3)), latticeParticles(lattice, 1000));
   dem.advance(0, 1e-5);
   long pid = getpid();
   MPI_Bcast(&pid, 1, MPI_LONG, 0, comm);

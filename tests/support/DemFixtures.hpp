@@ -43,6 +43,13 @@ inline ParticleConfig lubricatedConfig(double tc, double restitution, double rou
   return pc;
 }
 
+// pc with the defaults the run's configuration resolves (a DemSolver requires them).
+inline ParticleConfig resolved(const Config& c, ParticleConfig pc)
+{
+  pc.resolveDefaults(c);
+  return pc;
+}
+
 inline ParticleRecord sphere(std::int64_t id, Vec3 x, double radius, double density, Vec3 v = {}, Vec3 w = {})
 {
   ParticleRecord r;

@@ -83,7 +83,7 @@ Roll rollOut(double muR, double v0, double time)
   const double a = 1e-3;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
   // Resting on the floor, spinning as it rolls (w_y = v0 / a): no slip from the start.
-  DemSolver dem(grid, c, pc, {sphere(0, {0.01, 0.005, a}, a, 2500, {v0, 0, 0}, {0, v0 / a, 0})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(0, {0.01, 0.005, a}, a, 2500, {v0, 0, 0}, {0, v0 / a, 0})});
   const ParticleStore& s = dem.particles();
   const double dt = 4e-6;
   Roll r{NAN, 0, 0};
@@ -127,7 +127,7 @@ double tangentialRecoil(double xiT, double psiIn)
   pc.contact.restitutionT = xiT;
   const double a = 0.005, vn = 0.1;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(0, {0.02, 0.05, a + 1e-6}, a, 2500, {psiIn * vn, 0, -vn})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(0, {0.02, 0.05, a + 1e-6}, a, 2500, {psiIn * vn, 0, -vn})});
   ParticleStore& s = dem.particles();
   const double dt = 1e-3 / 2000;
   bool touched = false;
@@ -165,7 +165,7 @@ double lubricatedRebound(double tc)
   c.fluid.mu = rhoP * u * 2 * a / (9 * 152);
   ParticleConfig pc = lubricatedConfig(tc, 0.97, 2e-4, LubModel::Llcm, 0.1);
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(0, {0.01, 0.01, a * 1.1}, a, rhoP, {0, 0, -u})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(0, {0.01, 0.01, a * 1.1}, a, rhoP, {0, 0, -u})});
   const ParticleStore& s = dem.particles();
   const double dt = 1e-7;  // 50 sub-steps in the shortest contact
   double vmax = 0;
@@ -204,18 +204,18 @@ TEST_CASE("The saturated lubrication dashpot bounds the DEM sub-step", "[contact
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
   SECTION("the suggested DEM step respects it")
   {
-    DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
+    DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
     CHECK(dem.suggestedStep() == Approx(limit).epsilon(1e-9));
   }
   SECTION("beyond it, a sphere far from everything runs; at the saturation gap the run stops")
   {
     c.time.dt = 3 * limit;  // a fixed step beyond the bound: a warning, not an error
-    DemSolver far(grid, c, pc, {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
+    DemSolver far(grid, c, resolved(c, pc), {sphere(1, {0.005, 0.005, 0.005}, a, 1000)});
     CHECK_NOTHROW(far.advance(0, 3 * limit));
     const Vec3 atSaturation{0.005, 0.005, a * (1 + 1.0001e-3)};
-    DemSolver stable(grid, c, pc, {sphere(1, atSaturation, a, 1000)});
+    DemSolver stable(grid, c, resolved(c, pc), {sphere(1, atSaturation, a, 1000)});
     CHECK_NOTHROW(stable.advance(0, 1.98 * limit));  // c dt / m = 0.99
-    DemSolver unstable(grid, c, pc, {sphere(1, atSaturation, a, 1000)});
+    DemSolver unstable(grid, c, resolved(c, pc), {sphere(1, atSaturation, a, 1000)});
     CHECK_THROWS_WITH(unstable.advance(0, 3 * limit),
                       Catch::Contains("option -dem_substeps: the DEM sub-step") && Catch::Contains("raise -dem_substeps to at least 3"));
   }
@@ -233,7 +233,7 @@ TEST_CASE("A free-slip wall resists a squeeze four times less than a no-slip wal
     ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 2.5e-3, LubModel::Blcm, 0.1);
     const double a = 1e-3;
     Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-    DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});
+    DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});
     const ParticleStore& s = dem.particles();
     for (int k = 0; k < 200000 && s.x[0].z - a > 0.02 * a; ++k) dem.advance(0, 1e-6);
     return -s.v[0].z;

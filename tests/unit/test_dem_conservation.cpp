@@ -15,7 +15,7 @@ TEST_CASE("Isolated oblique pair collision conserves linear and angular momentum
   const double a1 = 0.005, a2 = 0.008;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
   // Off-centre, spinning, unequal: the contact slides first, then sticks.
-  DemSolver dem(grid, c, pc,
+  DemSolver dem(grid, c, resolved(c, pc),
                 {sphere(3, {0.040, 0.050, 0.050}, a1, 2500, {0.2, 0.01, -0.03}, {5, -20, 30}),
                  sphere(9, {0.0535, 0.056, 0.052}, a2, 1200, {-0.1, 0, 0.02}, {-10, 4, 0})});
   const ParticleStore& s = dem.particles();
@@ -60,7 +60,7 @@ TEST_CASE("Kinetic energy of a damped granular gas never increases", "[dem]")
         p.push_back(sphere(static_cast<std::int64_t>(p.size()), {0.01 + 0.02 * i, 0.01 + 0.02 * j, 0.01 + 0.02 * k}, 0.004,
                            2500, {0.4 * u(), 0.4 * u(), 0.4 * u()}, {100 * u(), 100 * u(), 100 * u()}));
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, p);
+  DemSolver dem(grid, c, resolved(c, pc), p);
   // Springs store energy during a contact, so compare the kinetic energy at contact-free instants.
   double previous = dem.diagnostics().kineticEnergy;
   const double initial = previous;
@@ -87,7 +87,7 @@ TEST_CASE("A free spinning sphere turns its orientation by omega t; -dem_orienta
   for (const bool integrate : {true, false}) {
     ParticleConfig pc = contactConfig(1e-3, 0.8, 0.4);
     pc.orientation = integrate;
-    DemSolver dem(grid, c, pc, {sphere(0, {0.05, 0.05, 0.05}, 0.005, 2500, {}, w)});
+    DemSolver dem(grid, c, resolved(c, pc), {sphere(0, {0.05, 0.05, 0.05}, 0.005, 2500, {}, w)});
     const int steps = 1000;
     const double dt = 1e-4;
     for (int k = 0; k < steps; ++k) dem.advance(k * dt, dt);

@@ -42,7 +42,7 @@ std::vector<Sample> fall(double cells, double gap0, double vz0, int steps, doubl
 {
   const Config c = liquidBox();
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, departureConfig(cells), {sphere(1, {0.009, 0.009, kA + gap0}, kA, kSteel, {0, 0, vz0})});
+  DemSolver dem(grid, c, resolved(c, departureConfig(cells)), {sphere(1, {0.009, 0.009, kA + gap0}, kA, kSteel, {0, 0, vz0})});
   ParticleStore& s = dem.particles();
   std::vector<Sample> out;
   for (int k = 0; k < steps; ++k) {
@@ -139,7 +139,7 @@ TEST_CASE("Departure: a sphere settling onto the wall and lifted from it never s
   const double hc = 2 * kRough * kA;
   const Config c = liquidBox();
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, departureConfig(1.0), {sphere(1, {0.009, 0.009, kA + 0.999 * hc}, kA, kSteel)});
+  DemSolver dem(grid, c, resolved(c, departureConfig(1.0)), {sphere(1, {0.009, 0.009, kA + 0.999 * hc}, kA, kSteel)});
   ParticleStore& s = dem.particles();
   const double dt = 1e-5;
   bool touched = false;
@@ -184,7 +184,7 @@ std::vector<PairSample> pairImpact(double cells)
   ParticleConfig pc = departureConfig(cells);
   pc.skin = 0.02;  // rebuilds the pair list during the departure: its state must survive them
   const double x0 = 0.009, half = kA + 0.15e-3;
-  DemSolver dem(grid, c, pc, {sphere(1, {x0 - half, 0.009, 0.009}, kA, kSteel, {1, 0, 0}), sphere(2, {x0 + half, 0.009, 0.009}, kA, kSteel)});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {x0 - half, 0.009, 0.009}, kA, kSteel, {1, 0, 0}), sphere(2, {x0 + half, 0.009, 0.009}, kA, kSteel)});
   ParticleStore& s = dem.particles();
   std::vector<PairSample> out;
   const double dt = 1e-5;
@@ -232,7 +232,7 @@ TEST_CASE("Departure of a pair: a sphere settling onto a fixed sphere and lifted
   ParticleRecord anchor = sphere(1, {0.009, 0.009, 0.006}, kA, kSteel);
   anchor.flags = kFixed;
   const double hc = kRough * 2 * kA;  // the pair's contact gap: roughness of the mean diameter
-  DemSolver dem(grid, c, departureConfig(1.0), {anchor, sphere(2, {0.009, 0.009, 0.006 + 2 * kA + 0.999 * hc}, kA, kSteel)});
+  DemSolver dem(grid, c, resolved(c, departureConfig(1.0)), {anchor, sphere(2, {0.009, 0.009, 0.006 + 2 * kA + 0.999 * hc}, kA, kSteel)});
   ParticleStore& s = dem.particles();
   const std::size_t top = s.id[0] == 2 ? 0 : 1, bottom = 1 - top;
   const double dt = 1e-5;

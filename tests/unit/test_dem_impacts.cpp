@@ -58,11 +58,11 @@ TEST_CASE("Normal sphere-wall impact: restitution and contact time", "[dem]")
           pc.contact.kn = 5000;
         }
         Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-        DemSolver probe(grid, c, pc, {});
+        DemSolver probe(grid, c, resolved(c, pc), {});
         const double tc = probe.law().contactTime(m, true);
         if (!givenStiffness) REQUIRE(tc == Approx(1e-3).epsilon(1e-12));
         const double dt = tc / stepsPerContact(e), gap = v * dt * (5 + 0.1 * phase);
-        DemSolver dem(grid, c, pc, {sphere(7, {0.05, 0.05, a + gap}, a, rho, {0, 0, -v})});
+        DemSolver dem(grid, c, resolved(c, pc), {sphere(7, {0.05, 0.05, a + gap}, a, rho, {0, 0, -v})});
         const Impact r = runImpact(
           dem, dt, [&](const ParticleStore& s) { return s.x[0].z - a; },
           [](const ParticleStore& s) { return -s.v[0].z; });
@@ -84,7 +84,7 @@ TEST_CASE("Normal sphere-sphere impact: restitution and contact time", "[dem]")
       // Unequal spheres: the law must use the reduced mass m* = m1 m2 / (m1 + m2).
       const double gap = (v1 - v2) * dt * (5 + 0.1 * phase);
       Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-      DemSolver dem(grid, c, pc,
+      DemSolver dem(grid, c, resolved(c, pc),
                     {sphere(1, {0.04, 0.05, 0.05}, a1, 2500, {v1, 0, 0}),
                      sphere(2, {0.04 + a1 + a2 + gap, 0.05, 0.05}, a2, 1000, {v2, 0, 0})});
       const Impact r = runImpact(
@@ -110,7 +110,7 @@ double obliquePsi2(double psiIn, double mu, double e)
   ParticleConfig pc = contactConfig(1e-3, e, mu);
   const double a = 0.005, vn = 0.1;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(0, {0.02, 0.05, a + 1e-5}, a, 2500, {psiIn * vn, 0, -vn})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(0, {0.02, 0.05, a + 1e-5}, a, 2500, {psiIn * vn, 0, -vn})});
   ParticleStore& s = dem.particles();
   const double dt = 1e-3 / 100;
   bool touched = false;
@@ -157,7 +157,7 @@ TEST_CASE("Impact on a fixed sphere: it stays put and acts as infinite mass", "[
   anchor.flags = kFixed;
   const double gap = v * dt * 5.3;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {anchor, sphere(2, {0.05 - 2 * a - gap, 0.05, 0.05}, a, 2500, {v, 0, 0})});
+  DemSolver dem(grid, c, resolved(c, pc), {anchor, sphere(2, {0.05 - 2 * a - gap, 0.05, 0.05}, a, 2500, {v, 0, 0})});
   const ParticleStore& s = dem.particles();
   const std::size_t fixedIndex = s.id[0] == 1 ? 0 : 1, mobile = 1 - fixedIndex;
   const Impact r = runImpact(

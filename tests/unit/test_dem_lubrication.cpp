@@ -25,7 +25,7 @@ std::vector<Crossing> approach(LubModel model, const std::vector<double>& eps, d
   // allows sub-steps up to m / (2 c) = 1.9e-6 s.
   const ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 2.5e-3, model, 0.1);
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.005, 0.005, a * 1.09}, a, 1000)});
   const ParticleStore& s = dem.particles();
   std::vector<Crossing> out(eps.size(), Crossing{0, false});
   const double dt = 1e-6;

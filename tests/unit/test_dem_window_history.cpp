@@ -38,7 +38,7 @@ Impact impact(bool history, double dt, int steps)
   pc.contact.hydroHistory = history;
   pc.substeps = 50;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(1, {0.009, 0.009, kA + 2e-6}, kA, kSteel, {0, 0, -0.2})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.009, 0.009, kA + 2e-6}, kA, kSteel, {0, 0, -0.2})});
   ParticleStore& s = dem.particles();
   Impact out;
   out.vz.push_back(s.v[0].z);
@@ -116,7 +116,7 @@ TEST_CASE("Window history: a small, light sphere in a viscous liquid stays stabl
   pc.substeps = 1;
   const double a = 1e-4, dt = 1e-4, v0 = 0.01;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(1, {0.001, 0.001, a + 1e-9}, a, 1100, {0, 0, -v0})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.001, 0.001, a + 1e-9}, a, 1100, {0, 0, -v0})});
   ParticleStore& s = dem.particles();
   // Without the force the elastic contact under the buoyant weight m g' peaks at sqrt(v0^2 + (g'/w)^2).
   const double gb = 9.81 * (1 - 1000.0 / 1100.0), w = M_PI / 1e-2, bound = std::sqrt(v0 * v0 + gb * gb / (w * w));
@@ -154,7 +154,7 @@ TEST_CASE("Window history: a re-contact inside a window fades the modes and adds
   pc.contact.hydroHistory = true;
   pc.substeps = 50;
   Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
-  DemSolver dem(grid, c, pc, {sphere(1, {0.009, 0.009, kA + gap / 2}, kA, kSteel, {0, 0, -v0})});
+  DemSolver dem(grid, c, resolved(c, pc), {sphere(1, {0.009, 0.009, kA + gap / 2}, kA, kSteel, {0, 0, -v0})});
   ParticleStore& s = dem.particles();
   const int steps = 3300;
   std::vector<double> vz{s.v[0].z};

@@ -460,7 +460,8 @@ TEST_CASE("Activation in grid cells: the same gap for every pair radius", "[lub]
   p.model = LubModel::Blcm;
   p.activationCells = 1.5;
   const double h = 1e-4;
-  p.complete(h, false, 1e-3, 2e-3);
+  p.resolveDefaults(h, false, 1e-3);
+  p.checkRadius(2e-3);
   for (double ratio : kRatios) {
     PairState s = genericPair(1, ratio);
     CHECK(p.activationGap(std::min(s.radiusI, s.radiusJ)) == Approx(1.5 * h).epsilon(1e-15));
@@ -479,8 +480,10 @@ TEST_CASE("Tangential terms from their own activation gap; the squeeze from the 
   split.activationCells = one.activationCells = 0.5;
   split.shearActivationCells = 0.2;  // one: the same gap for both parts (shear 0.5 cells)
   one.shearActivationCells = 0.5;
-  split.complete(h, true, 1e-4, 2e-3);
-  one.complete(h, true, 1e-4, 2e-3);
+  split.resolveDefaults(h, true, 1e-4);
+  split.checkRadius(2e-3);
+  one.resolveDefaults(h, true, 1e-4);
+  one.checkRadius(2e-3);
   for (double ratio : kRatios) {
     PairState s = genericPair(1, ratio);  // oblique velocities and spins
     PairState squeeze = s;                 // the normal relative motion alone
@@ -514,24 +517,27 @@ TEST_CASE("Shear activation: default 0.06 cells, at most the squeeze's, checked"
 {
   LubricationParams p;
   p.model = LubModel::Llcm;
-  p.complete(1e-4, true, 4e-4, 1e-3);
+  p.resolveDefaults(1e-4, true, 4e-4);
+  p.checkRadius(1e-3);
   CHECK(p.shearActivationCells == kDefaultShearActivationCells);
   CHECK(p.shearActivationGap(1e-3) == Approx(0.06e-4).epsilon(1e-15));
   LubricationParams q;
   q.model = LubModel::Llcm;
   q.activationCells = 0.04;  // below the default shear gap: the shear gap follows it down
-  q.complete(1e-4, true, 4e-4, 1e-5);
+  q.resolveDefaults(1e-4, true, 4e-4);
+  q.checkRadius(1e-5);
   CHECK(q.shearActivationGap(1e-3) == q.activationGap(1e-3));
   LubricationParams r;
   r.model = LubModel::Llcm;
   r.activationCells = 0.1;
   r.shearActivationCells = 0.2;
-  CHECK_THROWS_WITH(r.complete(1e-4, true, 4e-4, 1e-5),
+  CHECK_THROWS_WITH(r.resolveDefaults(1e-4, true, 4e-4),
                     "option -lub_shear_activation_cells: must be in (0, -lub_activation_cells = 0.1], got 0.2");
   LubricationParams e;  // an activation in radii: both parts use it
   e.model = LubModel::Llcm;
   e.activation = 0.05;
-  e.complete(1e-4, false, 4e-4, 1e-3);
+  e.resolveDefaults(1e-4, false, 4e-4);
+  e.checkRadius(1e-3);
   CHECK(e.shearActivationGap(2e-3) == e.activationGap(2e-3));
 }
 

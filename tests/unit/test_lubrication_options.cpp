@@ -66,28 +66,30 @@ TEST_CASE("Lubrication options: bad values name the option and the range", "[lub
         "option -lub_shear_activation_cells: give it with -lub_activation_cells, not -lub_activation, got 0.05");
 }
 
-TEST_CASE("Lubrication parameters completed by the caller", "[lub]")
+TEST_CASE("Lubrication defaults resolved from the grid, the fluid and the roughness", "[lub]")
 {
   LubricationParams p;
   p.model = LubModel::Blcm;
-  p.complete(1e-4, true, 4e-4, 1e-3); // coupled: activation 0.18 cells; saturation from the roughness
+  p.resolveDefaults(1e-4, true, 4e-4); // coupled: activation 0.18 cells; saturation from the roughness
+  CHECK(p.resolved());
   CHECK(p.activationCells == kDefaultActivationCells);
   CHECK(p.activationGap(1e-3) == Approx(0.18e-4).epsilon(1e-15));
   CHECK(p.activationGap(5e-4) == p.activationGap(1e-3));
   CHECK(p.saturation == 4e-4);
   LubricationParams q;
   q.model = LubModel::Blcm;
-  CHECK_THROWS_WITH(q.complete(1e-4, false, 4e-4, 1e-3), "option -lub_activation: must be > 0 (gap over radius), got 0 "
+  CHECK_THROWS_WITH(q.resolveDefaults(1e-4, false, 4e-4), "option -lub_activation: must be > 0 (gap over radius), got 0 "
                                                          "(DEM-only runs set -lub_activation or -lub_activation_cells)");
   LubricationParams r;
   r.model = LubModel::Llcm;
   r.activation = 0.01;
-  CHECK_THROWS_WITH(r.complete(1e-4, true, 0.05, 1e-3), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
+  CHECK_THROWS_WITH(r.resolveDefaults(1e-4, true, 0.05), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
   CHECK(r.activationGap(2e-3) == Approx(2e-5).epsilon(1e-15));  // eps_act given: per pair radius
   LubricationParams t;
   t.model = LubModel::Llcm;
   t.activationCells = 1;
   t.saturation = 0.2;  // 0.2 a = 2e-4 m for a = 1e-3 m: above the 1-cell activation gap
-  CHECK_THROWS_WITH(t.complete(1e-4, true, 4e-4, 1e-3),
-                    Catch::Contains("option -lub_saturation: the saturation gap 0.2 a must be > 0 and below the activation gap"));
+  t.resolveDefaults(1e-4, true, 4e-4);  // the gap depends on the particles: checked against them
+  CHECK_THROWS_WITH(t.checkRadius(1e-3), Catch::Contains("option -lub_saturation: the saturation gap 0.2 a must be below the activation gap"));
+  CHECK_NOTHROW(t.checkRadius(4e-4));
 }

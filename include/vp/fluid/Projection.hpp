@@ -10,6 +10,7 @@
 // (the plain projection corrects the solid's faces as freely as the fluid's, and the next predictor
 // undoes it there).
 #include "vp/core/Config.hpp"
+#include "vp/core/StateArchive.hpp"
 #include "vp/fluid/DiffusionSolver.hpp"
 #include "vp/fluid/Operators.hpp"
 #include "vp/fluid/PressureSolver.hpp"
@@ -49,19 +50,13 @@ public:
   Vec pressure() const { return p_; }      // cellDM global
   Vec velocityLocal() const { return uL_; } // faceDM local, ghosts valid after finishStep()
   const Grid& grid() const { return grid_; }
-  // The rest of the state an exact continuation needs (checkpoints): the last step's convection
-  // term and length (variable-step AB2) and the last pressure and velocity increments (the next
-  // solves' starts).
-  Vec convectionOld() const { return Nold_; }
-  Vec pressureIncrement() const { return psi_; }
-  Vec velocityIncrement() const { return du_; }  // the next viscous solve's start
-  // The increment before it, and how many of the two are real solves (0-2): from two, the next
-  // solve starts from their linear extrapolation.
-  Vec velocityIncrementOld() const { return duOld_; }
-  int increments() const { return increments_; }
-  void setIncrements(int n) { increments_ = n; }
+  // Its part of a checkpoint (collective): u, p, the last step's convection term, the last pressure
+  // and velocity increments (the next solves' starts; the one before when two were solved) and the
+  // pressure solutions the next starts are fitted from. loadState takes the last step's length
+  // (variable-step AB2) from the run's counters, then refreshes ghosts and statistics.
+  void saveState(StateWriter& w) const;
+  void loadState(const StateReader& r, double previousDt);
   double previousDt() const { return dtOld_; }
-  void setPreviousDt(double dt) { dtOld_ = dt; }
   PressureSolver& pressureSolver() { return pressure_; }
   const PressureSolver& pressureSolver() const { return pressure_; }
   DiffusionSolver& diffusionSolver() { return diffusion_; }

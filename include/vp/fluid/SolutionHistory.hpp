@@ -5,6 +5,7 @@
 // with c minimising |b - sum_i c_i A x_i|: never a worse residual than the last solution alone. The
 // history is kept here rather than in PETSc's guess object so that a checkpoint holds it and a
 // restart continues bit for bit: every stored number depends only on the stored solutions.
+#include "vp/core/StateArchive.hpp"
 #include <petscmat.h>
 #include <vector>
 
@@ -25,6 +26,11 @@ public:
   int size() const { return count_; }
   int capacity() const { return capacity_; }
   Vec solution(int i) const { return x_[i]; }  // oldest first
+  // Its part of a checkpoint: the solutions as pressure_history_<i>, oldest first (collective).
+  void save(StateWriter& w) const;
+  // Re-adds the stored solutions in order (the newest `capacity` of them): the history is then the
+  // uninterrupted run's. Checkpoints older than the history hold none (collective).
+  void load(const StateReader& r);
 
 private:
   double& gram(int i, int j) { return gram_[i * capacity_ + j]; }

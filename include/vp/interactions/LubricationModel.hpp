@@ -30,10 +30,10 @@ struct LubricationParams {
   LubModel model = LubModel::None;
   // eps_act = h_act / a, per pair radius. 0: the gap activationCells grid cells instead.
   double activation = 0;
-  // h_act in grid cells (when activation is 0); 0: set by complete() (kDefaultActivationCells in
-  // coupled runs).
+  // h_act in grid cells (when activation is 0); 0: set by resolveDefaults() (kDefaultActivationCells
+  // in coupled runs).
   double activationCells = 0;
-  // h_act,t of the tangential terms in grid cells (with activationCells; 0: set by complete() to
+  // h_act,t of the tangential terms in grid cells (with activationCells; 0: set by resolveDefaults() to
   // kDefaultShearActivationCells, at most activationCells). With an activation in radii both parts
   // use that gap.
   double shearActivationCells = 0;
@@ -42,10 +42,15 @@ struct LubricationParams {
   double saturation = 0;
   double llcmRegion = 1; // R0 = r0 / R, radius of the LLCM lubrication region in reduced radii
 
-  // Sets the defaults where the options left 0 and checks the complete set for spheres up to
-  // radius rmax (throws InputError naming the option). coupled: a fluid is solved (the activation
-  // then defaults to kDefaultActivationCells; DEM-only runs must give it).
-  void complete(double cellSize, bool coupled, double saturationFromRoughness, double rmax);
+  // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
+  // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a
+  // fluid is solved (the activation then defaults to kDefaultActivationCells; DEM-only runs must
+  // give it).
+  void resolveDefaults(double cellSize, bool coupled, double saturationFromRoughness);
+  bool resolved() const { return resolved_; }
+  // The particles' part of the check: with a gap in cells, the saturation gap of the largest
+  // sphere (radius rmax) must lie below the activation gap (throws InputError naming the option).
+  void checkRadius(double rmax) const;
   // Activation gap h_act [m] of a pair whose smaller radius is a.
   double activationGap(double a) const { return activation > 0 ? activation * a : gridGap_; }
   // Activation gap h_act,t [m] of the tangential terms of that pair.
@@ -54,12 +59,13 @@ struct LubricationParams {
 private:
   double gridGap_ = 0;       // activationCells * cell size [m]
   double shearGridGap_ = 0;  // shearActivationCells * cell size [m]
+  bool resolved_ = false;
 };
 
 // Raw model force at the state's gap (no activation or saturation).
 PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s);
 
-// The correction a pair loop adds for a sphere-sphere or sphere-wall pair (complete() called).
+// The correction a pair loop adds for a sphere-sphere or sphere-wall pair (defaults resolved).
 // contactGap: the surface gap at which the contact model takes over (roughness).
 PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap);
 

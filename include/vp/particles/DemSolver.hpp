@@ -4,6 +4,7 @@
 // of dt/M, with the hydrodynamic force and torque in particles().fhyd/thyd held fixed), and
 // diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step and fhyd/thyd are ignored.
 #include "vp/core/Config.hpp"
+#include "vp/core/StateArchive.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/interactions/BassetModes.hpp"
 #include "vp/interactions/ContactModel.hpp"
@@ -38,7 +39,7 @@ class DemSolver {
 public:
   // Particles from the options (-particles_file, generators, single particle).
   DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc);
-  // Particles given as one global list, identical on every rank (tests, restart). restart: the
+  // Particles given as one global list, identical on every rank (tests, restart: loadParticles). restart: the
   // records carry the forces of their last sub-step and their contact springs: keep them.
   DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
             bool restart = false);
@@ -46,8 +47,10 @@ public:
   // One fluid step [t, t + dt]: -dem_substeps sub-steps. Collective.
   void advance(double t, double dt);
 
-  // This rank's particles with their contact springs (for a checkpoint).
-  std::vector<ParticleRecord> ownedRecords();
+  // Its part of a checkpoint: this rank's particles with their contact springs
+  // (particles/ParticleCheckpoint.hpp; a restart gives loadParticles' list to the constructor).
+  // Collective.
+  void saveState(StateWriter& w);
   ParticleStore& particles() { return store_; }
   const ParticleStore& particles() const { return store_; }
   // Collective: global sums over owned particles.

@@ -2,6 +2,7 @@
 // Particle, contact and DEM options (-particles_*, -particle_*, -contact_*, -dem_*, -track_particles):
 // read() parses them (vp/core/Options.hpp), validate() checks them; bad values raise
 // vp::InputError naming the option and the valid range.
+#include "vp/core/Config.hpp"
 #include "vp/core/Vec3.hpp"
 #include "vp/interactions/ContactConfig.hpp"
 #include "vp/interactions/LubricationModel.hpp"
@@ -46,7 +47,7 @@ struct ParticleConfig {
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
   bool allFixed = false;      // -particles_fixed: every particle held in place (forces still measured)
   ContactConfig contact;
-  LubricationParams lubrication; // -lub_*: completed by DemSolver (activation and saturation defaults)
+  LubricationParams lubrication; // -lub_*: activation and saturation defaults set by resolveDefaults
   double maskSupport = 0;     // set by the coupling: how far beyond a radius the mask reaches [m]
   int substeps = 1;           // -dem_substeps per fluid step
   double skin = 0.1;          // -dem_skin: neighbour-list skin as a fraction of the largest diameter
@@ -60,6 +61,9 @@ struct ParticleConfig {
 
   static ParticleConfig read();
   void validate() const;
+  // The defaults that depend on the grid, the fluid and the contact law (the lubrication's
+  // activation and saturation gaps); once, before a DemSolver is built (it requires them).
+  void resolveDefaults(const Config& main);
 };
 
 } // namespace vp
