@@ -63,6 +63,16 @@ void RunConfig::validate(MPI_Comm comm) const
   int ranks;
   MPI_Comm_size(comm, &ranks);
   solvers.validate(ranks, main.grid.n[2], penalization.weightedProjection && particles.any() && !main.fluid.off);
+  const std::array<int, 3>& split = main.grid.ranks;
+  if (split != std::array<int, 3>{0, 0, 0}) {
+    if (split[0] * split[1] * split[2] != ranks)
+      failOption("-grid_ranks", "the ranks per axis must multiply to the number of ranks, " + std::to_string(ranks) + ", got " +
+                                    std::to_string(split[0]) + "," + std::to_string(split[1]) + "," + std::to_string(split[2]));
+    for (int d = 0; d < 3; ++d)
+      if (split[d] > main.grid.n[d])
+        failOption("-grid_ranks", std::string("at most one rank per cell along ") + "xyz"[d] + " (" + std::to_string(main.grid.n[d]) +
+                                      " cells), got " + std::to_string(split[d]));
+  }
   if (main.fluid.off && !particles.any())
     failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
   if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
@@ -85,6 +95,13 @@ void RunConfig::resolveDefaults(MPI_Comm comm)
                   particles.contact.tc);
   }
   particles.resolveDefaults(main);
+  // The fft pressure solver works on slabs along z: a grid split the same way hands it its slab
+  // without redistribution (and splits a column of particles across ranks by height).
+  int ranks = 1;
+  if (comm != MPI_COMM_NULL) MPI_Comm_size(comm, &ranks);
+  if (main.grid.ranks == std::array<int, 3>{0, 0, 0} && solvers.pressurePc == "fft" && !main.fluid.off && ranks > 1 &&
+      ranks <= main.grid.n[2])
+    main.grid.ranks = {1, 1, ranks};
 }
 
 void RunConfig::checkMemory(MPI_Comm comm) const

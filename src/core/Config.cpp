@@ -37,6 +37,17 @@ Config Config::read()
     }
   }
   {
+    OptionGroup o("Parallel decomposition", false);
+    const Vec3 ranks = o.vec3("-grid_ranks", {0, 0, 0},
+                              "Ranks per axis px,py,pz, their product the number of ranks; 0,0,0: slabs along z with "
+                              "-pressure_pc_type fft (the solver's own layout), else PETSc's split");
+    for (int d = 0; d < 3; ++d) {
+      if (!optionsHelpMode() && (ranks[d] != std::floor(ranks[d]) || ranks[d] < 0 || ranks[d] > 1e6))
+        failOption("-grid_ranks", "needs whole numbers >= 0, got " + formatNumber(ranks[d]));
+      c.grid.ranks[d] = static_cast<int>(ranks[d]);
+    }
+  }
+  {
     OptionGroup o("Boundary conditions per face: wall|slip|periodic|velocity");
     for (int f = 0; f < 6; ++f) {
       const std::string opt = std::string("-bc_") + kFaceNames[f];

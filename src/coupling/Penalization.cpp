@@ -1,6 +1,7 @@
 #include "vp/coupling/Penalization.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
+#include "vp/core/VecValues.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
 #include <algorithm>
@@ -46,6 +47,7 @@ Penalization::Penalization(const Grid& grid, const PenalizationConfig& cfg, doub
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &theta_));
   VP_CALL(DMCreateGlobalVector(grid.faceDM(), &thetaUs_));
   VP_CALL(PetscObjectSetName((PetscObject)chi_, "chi"));
+  for (Vec v : {chi_, us_, theta_, thetaUs_}) VP_CALL(VecSet(v, 0));
 }
 
 Penalization::~Penalization()
@@ -56,113 +58,159 @@ Penalization::~Penalization()
   VecDestroy(&chi_);
 }
 
+namespace {
+
+// (i, j, k) and component c of the faces of a rank's owned arrays (3 per cell), visited in
+// increasing order: integer divisions only when the grid row changes.
+class FaceWalker {
+public:
+  explicit FaceWalker(const Grid& g)
+    : nx_(g.end(0) - g.start(0)), ny_(g.end(1) - g.start(1)), i0_(g.start(0)), j0_(g.start(1)), k0_(g.start(2)), rowStart_(-2 * nx_)
+  {
+  }
+  struct Face {
+    PetscInt index[3];
+    int c;
+  };
+  Face operator()(PetscInt f)
+  {
+    const PetscInt cell = f / 3;
+    if (cell < rowStart_ || cell >= rowStart_ + nx_) {
+      const PetscInt row = cell / nx_;
+      rowStart_ = row * nx_;
+      j_ = row % ny_ + j0_;
+      k_ = row / ny_ + k0_;
+    }
+    return {{cell - rowStart_ + i0_, j_, k_}, static_cast<int>(f - 3 * cell)};
+  }
+
+private:
+  PetscInt nx_, ny_, i0_, j0_, k0_, rowStart_, j_ = 0, k_ = 0;  // rowStart_: no row yet
+};
+
+} // namespace
+
 void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
 {
   const Grid& g = grid_;
-  VP_CALL(VecSet(chi_, 0));
-  VP_CALL(VecSet(us_, 0));
-  {
-    FaceArray chiA(g.faceDM(), chi_), usA(g.faceDM(), us_);
-    PetscScalar ****chi = chiA.a, ****us = usA.a;
-    const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
-    owner_.assign(3 * nx * ny * (g.end(2) - g.start(2)), -1);
-    const double eps = support_;
-    for (std::size_t p = 0; p < s.size(); ++p) {
-      const Vec3 X = s.x[p];
-      const double a = s.radius[p], reach = a + eps;
-      for (int c = 0; c < 3; ++c) {
-        // Owned faces of component c within reach of the centre (face c sits at index i along c).
-        PetscInt lo[3], hi[3];
-        for (int d = 0; d < 3; ++d) {
-          const double off = d == c ? 0 : 0.5;
-          lo[d] = std::max<PetscInt>(g.start(d), PetscInt(std::ceil((X[d] - reach - g.lo(d)) / g.h(d) - off)));
-          hi[d] = std::min<PetscInt>(g.end(d), PetscInt(std::floor((X[d] + reach - g.lo(d)) / g.h(d) - off)) + 1);
-        }
-        // Faces of the bounding box beyond the reach are skipped by their squared distance first
-        // (about half of the box: no square root for them).
-        const double reach2 = reach * reach;
-        auto coord = [&](int d, PetscInt q) { return d == c ? g.faceCoord(d, q) : g.cellCentre(d, q); };
-        for (PetscInt k = lo[2]; k < hi[2]; ++k) {
-          const double dz = coord(2, k) - X[2], dz2 = dz * dz;
-          for (PetscInt j = lo[1]; j < hi[1]; ++j) {
-            const double dy = coord(1, j) - X[1], dyz2 = dz2 + dy * dy;
-            if (dyz2 > reach2) continue;
-            for (PetscInt i = lo[0]; i < hi[0]; ++i) {
-              const Vec3 x{coord(0, i), coord(1, j), coord(2, k)};
-              const Vec3 r = x - X;
-              if (r[0] * r[0] + dyz2 > reach2) continue;
-              const double phi = a - norm(r);  // > 0 inside
-              double value;
-              if (eps == 0) value = phi > 0 ? 1 : 0;
-              else if (phi <= -eps) value = 0;
-              else if (phi >= eps) value = 1;
-              else value = 0.5 * (1 + phi / eps + std::sin(M_PI * phi / eps) / M_PI);
-              if (value <= chi[k][j][i][c]) continue;
-              chi[k][j][i][c] = value;
-              us[k][j][i][c] = (s.v[p] + cross(s.w[p], r))[c];
-              owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c] = static_cast<int>(p);
-            }
-          }
-        }
-      }
-    }
+  const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1), nz = g.end(2) - g.start(2);
+  // Index of an owned face in the local arrays (and owner_): the faceDM's natural local order.
+  auto at = [&](PetscInt i, PetscInt j, PetscInt k, int c) {
+    return 3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c;
+  };
+  WriteValues chi(chi_), us(us_), theta(theta_), thetaUs(thetaUs_);
+  if (owner_.empty()) owner_.assign(3 * nx * ny * nz, -1);
+  // Only the faces the last build covered are non-zero: no sweep over the grid.
+  for (const PetscInt f : covered_) {
+    chi[f] = us[f] = theta[f] = thetaUs[f] = 0;
+    owner_[f] = -1;
   }
-  VP_CALL(VecCopy(chi_, theta_));
+  const double eps = support_;
+  // Particles in the order of their centres' cells (z, then y, then x): a neighbour's faces are then
+  // still in cache. A face shared at equal chi goes to the smaller id, whatever the order.
+  std::vector<std::pair<double, std::size_t>> keys(s.size());
+  for (std::size_t p = 0; p < s.size(); ++p) {
+    double key = 0;
+    for (int d = 2; d >= 0; --d) key = key * (g.n(d) + 2) + std::floor((s.x[p][d] - g.lo(d)) / g.h(d));
+    keys[p] = {key, p};
+  }
+  std::sort(keys.begin(), keys.end());
+  for (const auto& [key, p] : keys) {
+    const Vec3 X = s.x[p];
+    const double a = s.radius[p], reach = a + eps, reach2 = reach * reach;
+    // Owned faces of component c within reach of the centre, box[c] (face c sits at index i along
+    // c); the three components are visited together, cell by cell, as they lie in memory.
+    PetscInt lo[3][3], hi[3][3], ulo[3], uhi[3];
+    for (int d = 0; d < 3; ++d) ulo[d] = g.end(d), uhi[d] = g.start(d);
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) {
+        const double off = d == c ? 0 : 0.5;
+        lo[c][d] = std::max<PetscInt>(g.start(d), PetscInt(std::ceil((X[d] - reach - g.lo(d)) / g.h(d) - off)));
+        hi[c][d] = std::min<PetscInt>(g.end(d), PetscInt(std::floor((X[d] + reach - g.lo(d)) / g.h(d) - off)) + 1);
+        ulo[d] = std::min(ulo[d], lo[c][d]);
+        uhi[d] = std::max(uhi[d], hi[c][d]);
+      }
+    auto coord = [&](int c, int d, PetscInt q) { return d == c ? g.faceCoord(d, q) : g.cellCentre(d, q); };
+    for (PetscInt k = ulo[2]; k < uhi[2]; ++k)
+      for (PetscInt j = ulo[1]; j < uhi[1]; ++j) {
+        // Rows beyond the reach are skipped by their squared distance first (no square root).
+        double dyz2[3];
+        bool row[3], any = false;
+        for (int c = 0; c < 3; ++c) {
+          row[c] = k >= lo[c][2] && k < hi[c][2] && j >= lo[c][1] && j < hi[c][1];
+          if (!row[c]) continue;
+          const double dz = coord(c, 2, k) - X[2], dy = coord(c, 1, j) - X[1];
+          dyz2[c] = dz * dz + dy * dy;
+          row[c] = dyz2[c] <= reach2;
+          any = any || row[c];
+        }
+        if (!any) continue;
+        for (PetscInt i = ulo[0]; i < uhi[0]; ++i)
+          for (int c = 0; c < 3; ++c) {
+            if (!row[c] || i < lo[c][0] || i >= hi[c][0]) continue;
+            const Vec3 r = Vec3{coord(c, 0, i), coord(c, 1, j), coord(c, 2, k)} - X;
+            if (r[0] * r[0] + dyz2[c] > reach2) continue;
+            const double phi = a - norm(r);  // > 0 inside
+            double value;
+            if (eps == 0) value = phi > 0 ? 1 : 0;
+            else if (phi <= -eps) value = 0;
+            else if (phi >= eps) value = 1;
+            else value = 0.5 * (1 + phi / eps + std::sin(M_PI * phi / eps) / M_PI);
+            const PetscInt f = at(i, j, k, c);
+            if (value <= 0 || value < chi[f] || (value == chi[f] && s.id[owner_[f]] < s.id[p])) continue;
+            chi[f] = value;
+            us[f] = (s.v[p] + cross(s.w[p], r))[c];
+            owner_[f] = static_cast<int>(p);
+          }
+      }
+  }
+  // The covered faces in the arrays' order (the force sums add in that order on every rank count).
+  covered_.clear();
+  for (std::size_t f = 0; f < owner_.size(); ++f)
+    if (owner_[f] >= 0) covered_.push_back(static_cast<PetscInt>(f));
   // From the grid, lambda also holds the fluid inside a particle to its motion within a twentieth of
   // the time the flow takes to cross half a cell (the floor): at a small viscosity 400 nu / h^2 alone
   // left the mask porous and lost most of the added mass. The floor follows the fastest motion so far,
   // not the step taken: a stiffer mask seals a sub-cell gap, and a lambda that grew as the step shrank
   // kept rebounds from converging in the step (docs/coupling.md, Simulation::buildMask).
   stepLambda_ = cfg_.lambda > 0 ? cfg_.lambda : std::max(gridLambda_, lambdaFloor);
-  VP_CALL(VecScale(theta_, stepLambda_ * dt));
-  {
+  const double scale = stepLambda_ * dt;
+  FaceWalker face(g);
+  for (const PetscInt f : covered_) {
+    const FaceWalker::Face q = face(f);
     // A wall face keeps its boundary value: no penalization there.
-    FaceArray tA(g.faceDM(), theta_);
-    PetscScalar**** t = tA.a;
-    for (int c = 0; c < 3; ++c) {
-      if (!g.atLow(c)) continue;
-      PetscInt lo[3] = {g.start(0), g.start(1), g.start(2)}, hi[3] = {g.end(0), g.end(1), g.end(2)};
-      hi[c] = 1;
-      for (PetscInt k = lo[2]; k < hi[2]; ++k)
-        for (PetscInt j = lo[1]; j < hi[1]; ++j)
-          for (PetscInt i = lo[0]; i < hi[0]; ++i) t[k][j][i][c] = 0;
-    }
+    theta[f] = isFixedFace(g, q.c, q.index[q.c]) ? 0 : chi[f] * scale;
+    thetaUs[f] = theta[f] * us[f];
   }
-  VP_CALL(VecPointwiseMult(thetaUs_, theta_, us_));
 }
 
-// Visits every owned, free face covered by a particle: f(i, j, k, c, p, r, chi), r = face - centre.
+// Visits every owned, free face covered by a particle: f(index in the owned arrays, component c,
+// particle p, r = face - centre, chi).
 template <class F>
 void Penalization::forCovered(const ParticleStore& s, F&& f) const
 {
   const Grid& g = grid_;
-  FaceArray chiA(g.faceDM(), chi_, true);
-  PetscScalar**** chi = chiA.a;
-  const PetscInt nx = g.end(0) - g.start(0), ny = g.end(1) - g.start(1);
-  for (PetscInt k = g.start(2); k < g.end(2); ++k)
-    for (PetscInt j = g.start(1); j < g.end(1); ++j)
-      for (PetscInt i = g.start(0); i < g.end(0); ++i) {
-        const PetscInt q[3] = {i, j, k};
-        for (int c = 0; c < 3; ++c) {
-          const int p = owner_[3 * (((k - g.start(2)) * ny + (j - g.start(1))) * nx + (i - g.start(0))) + c];
-          if (p < 0 || isFixedFace(g, c, q[c])) continue;
-          Vec3 x{g.cellCentre(0, i), g.cellCentre(1, j), g.cellCentre(2, k)};
-          x[c] = g.faceCoord(c, q[c]);
-          f(i, j, k, c, p, x - s.x[p], chi[k][j][i][c]);
-        }
-      }
+  ReadValues chi(chi_);
+  FaceWalker face(g);
+  for (const PetscInt at : covered_) {
+    const FaceWalker::Face q = face(at);
+    if (isFixedFace(g, q.c, q.index[q.c])) continue;
+    const int p = owner_[at];
+    Vec3 x{g.cellCentre(0, q.index[0]), g.cellCentre(1, q.index[1]), g.cellCentre(2, q.index[2])};
+    x[q.c] = g.faceCoord(q.c, q.index[q.c]);
+    f(at, q.c, p, x - s.x[p], chi[at]);
+  }
 }
 
 void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const
 {
   sums.assign(kHydroSums * s.size(), 0.0);
   const double dV = grid_.cellVolume();
-  FaceArray aA(grid_.faceDM(), uStar, true), usA(grid_.faceDM(), us_, true);
-  PetscScalar ****a = aA.a, ****us = usA.a;
-  forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
+  ReadValues a(uStar), us(us_);
+  forCovered(s, [&](PetscInt at, int c, int p, const Vec3& r, double chi) {
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
-    f[c] = rho_ * chi * stepLambda_ * (a[k][j][i][c] - us[k][j][i][c]) * dV;
+    f[c] = rho_ * chi * stepLambda_ * (a[at] - us[at]) * dV;
     const Vec3 t = cross(r, f);
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {
@@ -175,11 +223,10 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
 void Penalization::addFluidMomentum(const ParticleStore& s, Vec u, std::vector<double>& sums) const
 {
   const double dV = grid_.cellVolume();
-  FaceArray aA(grid_.faceDM(), u, true);
-  PetscScalar**** a = aA.a;
-  forCovered(s, [&](PetscInt i, PetscInt j, PetscInt k, int c, int p, const Vec3& r, double chi) {
+  ReadValues a(u);
+  forCovered(s, [&](PetscInt at, int c, int p, const Vec3& r, double chi) {
     Vec3 momentum;
-    momentum[c] = rho_ * chi * a[k][j][i][c] * dV;
+    momentum[c] = rho_ * chi * a[at] * dV;
     const Vec3 moment = cross(r, momentum);
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {

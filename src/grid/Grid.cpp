@@ -18,8 +18,10 @@ Grid::Grid(MPI_Comm comm, const GridConfig& g, const BoundaryConfig& bc) : comm_
   }
 
   // The partition may be too fine for the grid: report it as bad input, not a PETSc trace.
+  PetscInt split[3];
+  for (int d = 0; d < 3; ++d) split[d] = g.ranks[d] > 0 ? g.ranks[d] : PETSC_DECIDE;
   VP_CALL(DMDACreate3d(comm, bt[0], bt[1], bt[2], DMDA_STENCIL_STAR, n_[0], n_[1], n_[2],
-                       PETSC_DECIDE, PETSC_DECIDE, PETSC_DECIDE, 1, 1, nullptr, nullptr, nullptr, &cellDM_));
+                       split[0], split[1], split[2], 1, 1, nullptr, nullptr, nullptr, &cellDM_));
   VP_CALL(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
   PetscErrorCode ierr = DMSetUp(cellDM_);
   VP_CALL(PetscPopErrorHandler());

@@ -17,6 +17,9 @@ struct GridConfig {
   std::array<int, 3> n{32, 32, 32};        // cells per axis
   std::array<double, 3> lo{0, 0, 0};       // domain box [m]
   std::array<double, 3> hi{1, 1, 1};
+  // Ranks per axis (-grid_ranks); 0,0,0: z slabs with the fft pressure solver (its own layout, so
+  // the pressure needs no redistribution), else PETSc's split (RunConfig::resolveDefaults).
+  std::array<int, 3> ranks{0, 0, 0};
 
   double spacing(int d) const { return (hi[d] - lo[d]) / n[d]; }  // uniform cell size along axis d [m]
 };

@@ -64,6 +64,7 @@ private:
   double stepLambda_ = 0;  // lambda of the step being built (build())
   Vec chi_ = nullptr, us_ = nullptr, theta_ = nullptr, thetaUs_ = nullptr;
   std::vector<int> owner_;  // per owned face (3 per cell): particle with the largest chi, or -1
+  std::vector<PetscInt> covered_;  // the owned faces with an owner, in increasing order
 };
 
 } // namespace vp
