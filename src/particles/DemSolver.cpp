@@ -29,13 +29,13 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
                      bool restart)
-  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), rhoFluid_(c.fluid.rho),
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu),
     gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off), drag_(pc.implicitDrag),
-    resolvedInContact_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro)
+    handOff_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro,
+             pc.contact.departureCells * std::min({grid.h(0), grid.h(1), grid.h(2)}), pc.contact.hydroHistory, c.fluid.rho,
+             c.fluid.mu, c.gravity)
 {
   if (!pc.lubrication.resolved()) throw std::logic_error("DemSolver: ParticleConfig::resolveDefaults was not called");
-  windowHistory_ = resolvedInContact_ != ContactHydro::Keep && pc.contact.hydroHistory;
-  bassetScale_ = 6 * std::sqrt(M_PI * rhoFluid_ * mu_);
   for (int f = 0; f < 6; ++f) {
     if (walls_[f].active) activeWalls_.push_back(f);
     // Periodic faces are pushed to infinity for the quick wall-proximity test.
@@ -59,11 +59,9 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   skin_ = pc_.skin * 2 * rmax_;
   // Lubrication acts below the activation gap; it holds constant below the roughness gap, where
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
-  const double hmin = std::min({grid_.h(0), grid_.h(1), grid_.h(2)});
   lub_.checkRadius(rmax_);
-  if (hydro_ && resolvedInContact_ == ContactHydro::Limit) departureGap_ = pc_.contact.departureCells * hmin;
   if (lub_.model != LubModel::None) {
-    lubGap_ = std::max(lub_.activationGap(rmax_), departureGap_);  // pairs stay listed while they depart
+    lubGap_ = std::max(lub_.activationGap(rmax_), handOff_.departureGap());  // pairs stay listed while they depart
     lubStableSubstep_ = 0.5 / lubricationRate(all);
   }
   // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
@@ -74,14 +72,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
     if (exchange_->owns(r.x)) store_.append(r);
   store_.nOwned = store_.size();
   // A checkpoint written with other -contact_hydro options: their flags do not apply here.
-  const std::uint8_t stale = resolvedInContact_ == ContactHydro::Keep ? kContactFlags
-                             : departureGap_ == 0                    ? (kDeparting | kWallImpact | kPairDeparting) : 0;
-  for (std::size_t i = 0; i < store_.nOwned; ++i) {
-    store_.flags[i] &= ~stale;
-    if (!windowHistory_) store_.windowHistory[i] = WindowModes{};
-    if (departureGap_ == 0)
-      for (ContactSpring& c : store_.history[i]) c.departure = 0;
-  }
+  handOff_.dropStale(store_);
   rebuild();
   // Initial forces (zero step: springs keep their state). A restart has those of the last
   // sub-step, computed from the predicted velocities: recomputing them would change the run.
@@ -143,13 +134,7 @@ void DemSolver::computeForces(double dt)
   const double rough = law_.roughness();
   // Ghost entries collect partial sums too (never used): no branch in the scatter.
   for (std::size_t i = 0; i < s.size(); ++i) s.force[i] = s.torque[i] = Vec3{};
-  // A particle that was in a wall impact or leaving one may be leaving a wall: a candidate for the
-  // departure (-contact_hydro_departure), confirmed or dropped by the wall loop below.
-  if (resolvedInContact_ != ContactHydro::Keep)
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const bool candidate = departureGap_ > 0 && (s.flags[i] & (kWallImpact | kDeparting));
-      s.flags[i] = (s.flags[i] & ~kContactFlags) | (candidate ? kDeparting : 0);
-    }
+  handOff_.startForces(s);
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
   for (std::size_t k = 0; k < P.size(); ++k) {
@@ -169,11 +154,10 @@ void DemSolver::computeForces(double dt)
     const Vec3 n = (1 / r) * d;
     // Leaving each other after an impact, closer than the departure gap: as at a wall, the resolved
     // force of both stays excluded and the correction stands for the film below that gap.
-    const bool leaving = departureGap_ > 0 && (P.departure[k] & (kPairImpact | kPairLeaving)) &&
-                         dot(s.v[i] - s.v[j], n) > 0 && gap < departureGap_;
+    const bool leaving = handOff_.pairLeaving(s, i, j, n, gap, P.departure[k]);
     // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
     const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving);
-    std::uint8_t departure = 0;
+    std::uint8_t impact = 0;
     if (!touching && !lubricating) {
       P.departure[k] = 0;
       continue;
@@ -194,22 +178,9 @@ void DemSolver::computeForces(double dt)
       torqueI = roll - s.radius[i] * lever;
       torqueJ = -roll - s.radius[j] * lever;
       contacts += i < s.nOwned;  // counted by the owner of the lower id: once over all ranks
-      if (resolvedInContact_ != ContactHydro::Keep) {
-        s.flags[i] |= kTouching;
-        s.flags[j] |= kTouching;
-      }
-      if (excludesResolvedForce(i, reach - r, law.kn)) s.flags[i] |= kResolvedForceOff;
-      if (excludesResolvedForce(j, reach - r, law.kn)) s.flags[j] |= kResolvedForceOff;
-      if (departureGap_ > 0 && (excludesResolvedForce(i, (reach - r) / 2, law.kn) || excludesResolvedForce(j, (reach - r) / 2, law.kn)))
-        departure = kPairImpact;
+      impact = handOff_.touchPair(s, i, j, reach - r, law.kn);
     }
-    // A new impact ends a departure.
-    if (leaving && !departure) {
-      departure = kPairLeaving;
-      s.flags[i] |= kPairDeparting;
-      s.flags[j] |= kPairDeparting;
-    }
-    P.departure[k] = departure;
+    P.departure[k] = handOff_.pairState(s, i, j, impact, leaving);
     if (lubricating) {
       PairState st;
       st.normal = -n;  // from i towards j
@@ -221,7 +192,7 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityI = s.w[i];
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
-      const PairForce l = lubricationForce(leaving ? departureFilm(amin) : lub_, st, rough * (s.radius[i] + s.radius[j]));
+      const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, amin) : lub_, st, rough * (s.radius[i] + s.radius[j]));
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
       force += l.forceI;
       torqueI += l.torqueI;
@@ -244,7 +215,7 @@ void DemSolver::computeForces(double dt)
     const bool candidate = s.flags[i] & kDeparting;
     bool departing = false;
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    if (s.wallTouch[i] || nearWall(s.x[i], std::max({reach, lubReach, candidate ? a + departureGap_ : 0.0}))) {
+    if (s.wallTouch[i] || nearWall(s.x[i], std::max({reach, lubReach, candidate ? a + handOff_.departureGap() : 0.0}))) {
       std::uint8_t touch = 0;
       for (int f : activeWalls_) {
         const Wall& wall = walls_[f];
@@ -268,14 +239,12 @@ void DemSolver::computeForces(double dt)
           T -= dist * cross(n, c.tangential);
           T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, 0, s.invInertia[i], dt);
           ++wallContacts;
-          if (resolvedInContact_ != ContactHydro::Keep) s.flags[i] |= kTouching;
-          if (excludesResolvedForce(i, overlap, wallCoef.kn)) s.flags[i] |= kResolvedForceOff;
-          if (departureGap_ > 0 && excludesResolvedForce(i, overlap / 2, wallCoef.kn)) s.flags[i] |= kWallImpact;
+          handOff_.touchWall(s, i, overlap, wallCoef.kn);
         }
         // Moving away from the wall after an impact, still in contact (below the buoyant-weight
         // overlap) or within the departure gap: the mask's sub-cell gap is not the squeeze
         // (docs/collisions.md), so the correction stands for the film below the departure gap.
-        const bool leaving = candidate && dot(s.v[i] - wall.velocity, n) > 0 && dist - a < departureGap_;
+        const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, n, dist - a);
         departing = departing || leaving;
         if (overlap <= 0 && (dist < lubReach || (leaving && lubricated))) {  // hand-off: no lubrication in contact
           PairState st;
@@ -288,7 +257,7 @@ void DemSolver::computeForces(double dt)
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
           st.slipWall = wall.slip;
-          const PairForce l = lubricationForce(leaving ? departureFilm(a) : lub_, st, 2 * rough * a);
+          const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, a) : lub_, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           F += l.forceI;
           T += l.torqueI;
@@ -296,8 +265,7 @@ void DemSolver::computeForces(double dt)
       }
       s.wallTouch[i] = touch;
     }
-    // A new impact, or no wall left to leave: the departure ends.
-    if (!departing || (s.flags[i] & kWallImpact)) s.flags[i] &= ~kDeparting;
+    handOff_.endWalls(s, i, departing);
     s.force[i] = F + s.mass[i] * gravity_;
     s.torque[i] = T;
   }
@@ -328,15 +296,6 @@ OverlapRecord DemSolver::takeLargestOverlap()
   return r;
 }
 
-LubricationParams DemSolver::departureFilm(double a) const
-{
-  LubricationParams film = lub_;
-  // An activation in radii: the squeeze and the tangential terms both from the departure gap, since
-  // the resolved force and torque are both off (at least the default activation).
-  film.activation = std::max(departureGap_, lub_.activationGap(a)) / a;
-  return film;
-}
-
 bool DemSolver::nearWall(const Vec3& x, double reach) const
 {
   return (x.x - wallLo_.x < reach) || (wallHi_.x - x.x < reach) || (x.y - wallLo_.y < reach) ||
@@ -363,8 +322,8 @@ void DemSolver::substep(double dt)
   // Fixed particles have zero inverse mass and inertia: their velocities stay as given (a prescribed
   // motion, at rest by default), with no branch.
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    const Vec3 dv = Hydro ? halfKick(i, half, s.force[i] + resolvedForce(i)) : (half * s.invMass[i]) * s.force[i];
-    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
+    const Vec3 dv = Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
+    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
     s.vHalf[i] = s.v[i] + dv;
     s.wHalf[i] = s.w[i] + dw;
     if (Hydro) relax(i, half, s.vHalf[i], s.wHalf[i]);
@@ -383,26 +342,12 @@ void DemSolver::substep(double dt)
   computeForces(dt);
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    s.v[i] = s.vHalf[i] + (Hydro ? halfKick(i, half, s.force[i] + resolvedForce(i)) : (half * s.invMass[i]) * s.force[i]);
-    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + resolvedTorque(i) : s.torque[i]);
+    s.v[i] = s.vHalf[i] + (Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i]);
+    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
     if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
   }
   kineticEnergy_ = 0.5 * ke;
-}
-
-bool DemSolver::excludesResolvedForce(std::size_t i, double overlap, double kn) const
-{
-  switch (resolvedInContact_) {
-  case ContactHydro::Exclude: return true;
-  case ContactHydro::Limit: {
-    // Beyond the overlap the particle's buoyant weight alone would press into this contact: an
-    // impact, not a particle resting on its support (which keeps its drag and pressure).
-    const double buoyantWeight = std::fabs(1 - rhoFluid_ / store_.density[i]) * store_.mass[i] * norm(gravity_);
-    return overlap * kn > buoyantWeight;
-  }
-  default: return false;
-  }
 }
 
 double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
@@ -423,7 +368,7 @@ double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
     geometry.radiusJ = aj;
     const double contactGap = law_.roughnessGap(ai, std::isinf(aj) ? 0 : aj);
     // With the departure the correction may start from its larger gap: the larger resistance.
-    return lubricationResistance(departureGap_ > 0 ? departureFilm(std::min(ai, aj)) : lub_, geometry, contactGap);
+    return lubricationResistance(handOff_.departureGap() > 0 ? handOff_.departureFilm(lub_, std::min(ai, aj)) : lub_, geometry, contactGap);
   };
   double rate = 0, invMassMax = 0;
   for (const auto& [a, invMass] : classes) invMassMax = std::max(invMassMax, invMass);
@@ -448,7 +393,7 @@ void DemSolver::watchLubrication(const PairState& st, double contactGap, double 
   // The BLCM resistance bounds the LLCM's (docs/lubrication.md): c = 6 pi mu R^2 (1/h - 1/h_act).
   const double a = std::min(st.radiusI, st.radiusJ), R = st.reducedRadius();
   const double h = std::max({st.gap, lub_.saturation * a, contactGap});
-  const double hAct = std::max(departureGap_, lub_.activationGap(a));  // the departure's, if larger
+  const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));  // the departure's, if larger
   const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - 1 / hAct);
   lubRateSeen_ = std::max(lubRateSeen_, c * invMassSum);
 }
@@ -476,7 +421,7 @@ void DemSolver::checkLubricationSeen(double dtp)
 void DemSolver::relax(std::size_t i, double half, Vec3& v, Vec3& w) const
 {
   const ParticleStore& s = store_;
-  if (drag_ == 0 || resolvedOff(i)) return;
+  if (drag_ == 0 || handOff_.resolvedOff(s, i)) return;
   const double a = s.radius[i];
   const double cv = half * s.invMass[i] * drag_ * 6 * M_PI * mu_ * a;
   const double cw = half * s.invInertia[i] * drag_ * 8 * M_PI * mu_ * a * a * a;
@@ -493,7 +438,7 @@ void DemSolver::advance(double, double dt)
       store_.wSeen[i] = store_.w[i];
     }
   const double dtp = dt / pc_.substeps;
-  if (windowHistory_) halfKickKernel_.emplace(0.5 * dtp);
+  handOff_.startSubsteps(dtp);
   lubWatch_ = lubWatch_ || dtp > lubStableSubstep_;
   for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
   if (lubWatch_) checkLubricationSeen(dtp);

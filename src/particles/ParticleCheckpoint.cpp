@@ -1,4 +1,5 @@
 #include "vp/particles/ParticleCheckpoint.hpp"
+#include "vp/particles/ContactHandOff.hpp"
 #include <algorithm>
 #include <map>
 

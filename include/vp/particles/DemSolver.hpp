@@ -6,9 +6,9 @@
 #include "vp/core/Config.hpp"
 #include "vp/core/StateArchive.hpp"
 #include "vp/grid/Grid.hpp"
-#include "vp/interactions/BassetModes.hpp"
 #include "vp/interactions/ContactModel.hpp"
 #include "vp/particles/CellBuckets.hpp"
+#include "vp/particles/ContactHandOff.hpp"
 #include "vp/particles/Exchange.hpp"
 #include "vp/particles/PairList.hpp"
 #include "vp/particles/ParticleConfig.hpp"
@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <optional>
 
 namespace vp {
 
@@ -81,53 +80,6 @@ private:
   void addStokesDrag();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
-  // The lubrication parameters of a sphere of radius a (the smaller of a pair) leaving after an
-  // impact: the correction from the departure gap (-contact_hydro_departure).
-  LubricationParams departureFilm(double a) const;
-  // -contact_hydro: whether a contact of this overlap and stiffness switches i's resolved force off.
-  bool excludesResolvedForce(std::size_t i, double overlap, double kn) const;
-  // The resolved force and torque particle i feels: without the dynamic part while excluded
-  // (the buoyancy, which the fluid's pressure does not carry, stays).
-  Vec3 resolvedForce(std::size_t i) const
-  {
-    const ParticleStore& s = store_;
-    return resolvedOff(i) ? (-rhoFluid_ / s.density[i] * s.mass[i]) * gravity_ : s.fhyd[i];
-  }
-  // The velocity change of a half kick of particle i with the force F. While its resolved force is
-  // excluded, with -contact_hydro_history, the Basset force -6 a^2 sqrt(pi rho mu) I of its velocity
-  // changes since then acts too, the kick's own change implicit (explicit, it is unstable once
-  // 2 K sqrt(dt) / m nears 1: small, light spheres in a viscous liquid). Not in contact: over a
-  // contact stretched to fluid steps the force would press the sphere into its partner, swelling
-  // the contact's impulse and the friction's, and keep acting on a sphere held at the wall, where
-  // a real contact is over before the force has acted. The contact's velocity change enters the
-  // history as one change when it ends, as that of a real, short contact at that moment. The modes
-  // are dropped (their storage freed) once the resolved force acts.
-  Vec3 halfKick(std::size_t i, double half, const Vec3& F)
-  {
-    ParticleStore& s = store_;
-    const Vec3 dv = (half * s.invMass[i]) * F;
-    if (!windowHistory_) return dv;
-    WindowModes& window = s.windowHistory[i];
-    if (!resolvedOff(i)) {
-      if (!window.empty()) window = WindowModes{};
-      return dv;
-    }
-    if (window.empty()) window.resize(1);
-    WindowHistory& w = window.front();
-    const BassetKernel& kernel = *halfKickKernel_;  // set by advance() for its sub-step
-    if (s.flags[i] & kTouching) {
-      kernel.advance(w.modes, Vec3{});  // older changes fade meanwhile
-      w.contactChange += dv;
-      return dv;
-    }
-    const double c = half * s.invMass[i] * bassetScale_ * s.radius[i] * s.radius[i], nw = kernel.newestWeight();
-    const Vec3 dvH = (1 / (1 + c * nw)) * (dv - c * (kernel.lagged(w.modes) + nw * w.contactChange));
-    kernel.advance(w.modes, dvH + w.contactChange);
-    w.contactChange = Vec3{};
-    return dvH;
-  }
-  Vec3 resolvedTorque(std::size_t i) const { return resolvedOff(i) ? Vec3{} : store_.thyd[i]; }
-  bool resolvedOff(std::size_t i) const { return store_.flags[i] & (kResolvedForceOff | kDeparting | kPairDeparting); }
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
@@ -148,12 +100,7 @@ private:
   ContactLaw law_;
   LubricationParams lub_;  // model none: no lubrication pairs
   double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
-  double rhoFluid_ = 0;    // fluid density (buoyancy kept while the resolved force is excluded)
   double lubGap_ = 0;      // largest activation or departure gap [m]
-  double departureGap_ = 0;  // -contact_hydro_departure in metres (0: off)
-  bool windowHistory_ = false;   // -contact_hydro_history
-  double bassetScale_ = 0;       // 6 sqrt(pi rho mu): the Basset force is -bassetScale a^2 I
-  std::optional<BassetKernel> halfKickKernel_;  // the modes' factors for half a DEM sub-step
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
   double lubRateSeen_ = 0;              // largest c (1/m_i + 1/m_j) seen since the last check [1/s]
@@ -162,7 +109,7 @@ private:
   void relax(std::size_t i, double half, Vec3& v, Vec3& w) const;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
   double drag_;                     // -dem_implicit_drag
-  ContactHydro resolvedInContact_;  // -contact_hydro (keep in DEM-only runs)
+  ContactHandOff handOff_;          // -contact_hydro and its departure and history (keep in DEM-only runs)
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)
   double skin_ = 0;        // neighbour-list skin [m]

@@ -7,20 +7,9 @@
 namespace vp {
 
 // kFixed: infinite mass and inertia; moves with its given constant velocity and spin (a prescribed
-// motion; held in place when they are zero).
-// kResolvedForceOff: in a contact whose resolved hydrodynamic force is excluded (-contact_hydro),
-// set by the DEM's force loop for the next kicks.
-// kWallImpact: that contact is a wall's, pressed beyond twice the buoyant-weight overlap (an impact,
-// not a sphere resting on it). kDeparting: leaving a wall after a wall impact, closer than
-// -contact_hydro_departure: the resolved force stays excluded and the lubrication correction acts
-// from that gap (set by the force loop). kPairDeparting: the same, leaving another sphere (the
-// pair's own state lives with the pair list, PairList::departure). kTouching: in contact with a
-// wall or another particle (set by the force loop unless -contact_hydro is keep).
-enum ParticleFlag : std::uint8_t {
-  kFixed = 1, kResolvedForceOff = 2, kDeparting = 4, kWallImpact = 8, kPairDeparting = 16, kTouching = 32
-};
-// The flags the DEM's force loop sets anew every sub-step (-contact_hydro other than keep).
-constexpr std::uint8_t kContactFlags = kResolvedForceOff | kDeparting | kWallImpact | kPairDeparting | kTouching;
+// motion; held in place when they are zero). The other bits of `flags` belong to the hand-off of the
+// resolved force, lubrication and contact (particles/ContactHandOff.hpp).
+enum ParticleFlag : std::uint8_t { kFixed = 1 };
 
 // Everything one particle carries when it changes owner (docs/particles.md, parallel decomposition):
 // the fields of ParticleFields.hpp.
