@@ -71,24 +71,30 @@ def crossing(g, v, i, level):
     return w, v[i - 1] + w * (v[i] - v[i - 1])
 
 
-def impact(rows, a, axis="z", gap_in=0.1):
-    """Impact on the floor z = 0, measured symmetrically outside the lubrication film: the approach
-    speed as the gap passes gap_in d on the way down, the rebound speed as it passes gap_in d on the
-    way up after the first contact (0 when it never rises that far: no rebound; right after contact
-    the saturated film takes what the contact returns, so the speed at release is not the rebound).
-    Returns (u_in, u_out, touched)."""
+# Where the speeds are read, as the experiments read them (Joseph et al. 2001, Gondret et al. 2002): the
+# approach speed before the wall's influence (a gap of 1 d; St from it), the rebound speed after the
+# contact, where the gap passes 0.1 d on the way out (outside the film, which takes the speed the
+# contact returns within micrometres). At 0.1 d on the way in the wall has already slowed the sphere
+# by 10-20 %.
+GAP_APPROACH, GAP_REBOUND = 1.0, 0.1
+
+
+def impact(rows, a, axis="z", gap_in=GAP_APPROACH, gap_out=GAP_REBOUND):
+    """Impact on the floor z = 0: the approach speed as the gap passes gap_in d on the way down, the
+    rebound speed as it passes gap_out d on the way up after the first contact (0 when it never rises
+    that far: no rebound). Returns (u_in, u_out, touched); u_in is None for a release below gap_in."""
     d = 2 * a
     g = [(r[axis] - a) / d for r in rows]
     v = [r["v" + axis] for r in rows]
-    speed = lambda i: crossing(g, v, i, gap_in)[1]
     down = next((i for i in range(1, len(rows)) if g[i - 1] > gap_in >= g[i]), None)
     # The first contact: a row in contact or, for a contact shorter than a fluid step, the first row
     # moving away from the wall after the approach.
     first = None if down is None else next((i for i in range(down, len(rows)) if g[i] <= 2e-4 or v[i] >= 0), None)
+    u_in = None if down is None else -crossing(g, v, down, gap_in)[1]
     if down is None or first is None:
-        return (None if down is None else -speed(down)), 0.0, first is not None
-    up = next((i for i in range(first + 1, len(rows)) if g[i - 1] < gap_in <= g[i]), None)
-    return -speed(down), (speed(up) if up is not None else 0.0), True
+        return u_in, 0.0, first is not None
+    up = next((i for i in range(first + 1, len(rows)) if g[i - 1] < gap_out <= g[i]), None)
+    return u_in, (crossing(g, v, up, gap_out)[1] if up is not None else 0.0), True
 
 
 def departure(rows, a, mu, rho_p=STEEL):
@@ -168,6 +174,13 @@ NO_HISTORY = ["-contact_hydro_history", 0]
 NO_DEPARTURE = ["-contact_hydro_departure", 0] + NO_HISTORY
 WITHOUT = NO_DEPARTURE if "--no-departure" in sys.argv else []
 SUFFIX = "_nodeparture" if WITHOUT else ""
+# The published recipes (docs/collisions.md, "Choice of the model"): Costa et al. 2015, the resolved force
+# excluded only beyond the buoyant-weight overlap, the film saturated at 1e-3 a above the contact gap
+# and acting down to contact, the contact over 8 fluid steps; Rettinger & Rude 2022, the resolved force
+# kept through a shallow contact (the cases' 2 fluid steps: about 0.02 d).
+COSTA = NO_DEPARTURE + ["-lub_saturation", 1e-3, "-contact_tc_steps", 8]
+RETTINGER = NO_DEPARTURE
+MODEL_ST = [20, 40, 100, 300, 1000]
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
 # Gondret et al.'s spheres: a roughness of 1e-4 a reported (as cited by Biegert et al. 2017); the
@@ -181,15 +194,15 @@ def restitution_axes(ax):
     ax.semilogx(s, [math.exp(-35 / x) for x in s], "k-", label="exp(-35/St) (Legendre et al.)")
     ax.fill_between(s, [max(0, math.exp(-35 / x) - 0.1) for x in s], [math.exp(-35 / x) + 0.1 for x in s],
                     color="0.85", label="pass band +-0.1 (St 20-1000)")
-    # Rigid-sphere lubrication theory: the same velocity loss u_in L / St on the way in and out, L the
-    # integral of Brenner's resistance from the gap where u_in is taken (0.1 d) to the roughness (2e-4 d).
+    # Rigid-sphere lubrication theory inside 0.1 d: the same velocity loss u_in L / St on the way in and
+    # out, L the integral of Brenner's resistance from 0.1 d to the roughness (2e-4 d).
     L = brenner_integral(4e-4, 0.2)
     ax.semilogx(s, [max(0.0, 1 - (1 + 1 / E_DRY) * L / x) for x in s], "k--", lw=1,
-                label="lubrication theory, rigid sphere (L = %.2f)" % L)
+                label="lubrication theory inside 0.1 d, rigid sphere (L = %.2f)" % L)
 
 
 def restitution():
-    fig, ax = plt.subplots(figsize=(9, 4.2))
+    fig, ax = plt.subplots(figsize=(10, 4.4))
     restitution_axes(ax)
     failures = []
     steel = (STEEL, RHO_F)
@@ -202,6 +215,9 @@ def restitution():
     if WITHOUT:  # the cases' set-up with and without the departure, steel and glass in water
         sets = (sets[0], (HYDRO, WITHOUT, "v", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, WITHOUT, "<", GLASS_ST, (GLASS, WATER)))
+    if "--models" in sys.argv:  # the cases' set-up (steel, glass) against the published recipes
+        sets = (sets[0], (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)), (HYDRO, COSTA, "D", MODEL_ST, steel),
+                ("keep", RETTINGER, "o", MODEL_ST, steel))
     if "--no-history" in sys.argv:  # the cases' set-up with and without the history force, steel and glass in water
         sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
@@ -209,6 +225,7 @@ def restitution():
         cases = ", departure 1 cell, history force"  # what the cases add to -contact_hydro limit
         name = hydro + (cases + ", plain projection" if extra == PLAIN else cases + ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
                         ", no history force" if extra == NO_HISTORY else
+                        ", Costa et al. 2015's recipe" if extra == COSTA else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
                         cases if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
@@ -221,7 +238,7 @@ def restitution():
             sti, e, u_in, _ = r
             pts.append((sti, e / E_DRY))
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
-            print("restitution: -contact_hydro %-24s nominal St %4g: u(0.1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
+            print("restitution: -contact_hydro %-24s nominal St %4g: u(1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
                   "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
             out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], NO_DEPARTURE, NO_HISTORY) else None
             if out:
@@ -231,17 +248,18 @@ def restitution():
             if hydro == HYDRO and not extra and rho_p == STEEL and abs(e / E_DRY - math.exp(-35 / sti)) > 0.1 and 20 <= sti <= 1000:
                 failures.append(st)
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % name)
-    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
+    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 1 d)")
     ax.set_ylabel("e / e_dry")
-    ax.set_title("Restitution of a sphere on a wall (steel in the cases' liquid%s), d/dx = %d" %
-                 (", glass in water" if WITHOUT or "--no-history" in sys.argv else "", res), fontsize=9)
+    ax.set_title("Restitution on a wall (steel in the cases' liquid%s), d/dx = %d" %
+                 (", glass in water" if WITHOUT or "--no-history" in sys.argv or "--models" in sys.argv else "", res), fontsize=9)
     print("restitution: -contact_hydro %s: %s" % (HYDRO, "all in the band (St 20-1000)" if not failures else
                                                  "outside the band at nominal St %s" % failures), flush=True)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_ylim(-0.05, 1.1)
     fig.tight_layout()
     name = ("restitution_departure.png" if WITHOUT else "restitution_history.png" if "--no-history" in sys.argv else
-            "restitution_roughness.png" if "--roughness" in sys.argv else "restitution_stokes.png")
+            "restitution_roughness.png" if "--roughness" in sys.argv else "restitution_models.png" if "--models" in sys.argv else
+            "restitution_stokes.png")
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
 
@@ -316,7 +334,7 @@ def harada():
             print("harada: history %-39s nominal St %4g: St %.1f, e/e_dry %.3f, exp(-35/St) %.3f, difference %+.3f" %
                   (name, st, sti, e / E_DRY, math.exp(-35 / sti), e / E_DRY - math.exp(-35 / sti)), flush=True)
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="Harada model, Basset history %s" % name)
-    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 0.1 d)")
+    ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 1 d)")
     ax.set_ylabel("e / e_dry")
     ax.set_title("The e(St) set-up in the Harada point-particle model (steel, d = 3 mm)", fontsize=9)
     ax.legend(fontsize=7, loc="lower right")
@@ -396,9 +414,9 @@ def gondret(hydro=HYDRO):
         ax.plot([(x["time"] - t0) / tref for x in rows], [(x["z"] - d / 2) / d for x in rows], "-", label="vpsolve d/dx %d" % res)
         ax.axhline(0, color="k", lw=0.5)
         ap = apexes(rows, d / 2)
-        st_in = GONDRET[st][1] * u_in * d / (9 * GONDRET[st][2])  # St of u(0.1 d): (rho_p/rho) u d / (9 nu)
-        print("gondret: St %d (-contact_hydro %s): u(0.1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
-              "(exp(-35/St) %.3f; at the impact St %.1f of u(0.1 d) %.3f); apex heights (gap/d) %s" %
+        st_in = GONDRET[st][1] * u_in * d / (9 * GONDRET[st][2])  # St of u(1 d): (rho_p/rho) u d / (9 nu)
+        print("gondret: St %d (-contact_hydro %s): u(1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
+              "(exp(-35/St) %.3f; at the approach St %.1f of u(1 d) %.3f); apex heights (gap/d) %s" %
               (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st), st_in,
                math.exp(-35 / st_in), ", ".join("%.3f" % x for x in ap[:3]) or "none"), flush=True)
         ax.set_title("Gondret St %d: d = %g mm, t_ref = sqrt(d/g) = %.4f s" % (st, d * 1e3, tref), fontsize=9)
@@ -562,7 +580,7 @@ def pair_run(st, label, extra=(), r=12):
     second = [{k: float(v) for k, v in x.items()} for x in csv.DictReader(open(os.path.join(out, "particle_1.csv")))]
     # The relative motion as a sphere over a floor: gap x1 - x0 - d, its rate vx1 - vx0.
     rel = [{"z": a + q["x"] - p["x"] - d, "vz": q["vx"] - p["vx"]} for p, q in zip(first, second)]
-    u_in, u_out, touched = impact(rel, a)
+    u_in, u_out, touched = impact(rel, a, gap_in=0.1)  # released at a gap of 1 d: both speeds at 0.1 d
     if u_in is None or not touched:
         return None
     return STEEL * u_in * d / (9 * study_mu(st)), u_out / u_in
