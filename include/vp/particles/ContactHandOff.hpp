@@ -32,7 +32,6 @@ public:
   // (used with limit only; 0: off); history: -contact_hydro_history.
   ContactHandOff(ContactHydro hydro, double departureGap, bool history, double rhoFluid, double mu, const Vec3& gravity);
 
-  ContactHydro mode() const { return mode_; }
   double departureGap() const { return departureGap_; }
   bool history() const { return history_; }
   // Flags and pair states a checkpoint written with other options left: cleared.
@@ -86,9 +85,10 @@ public:
   // -6 a^2 sqrt(pi rho mu) I of its velocity changes since its resolved force was excluded, the
   // kick's own change implicit (explicit, it is unstable once 2 K sqrt(dt) / m nears 1: small, light
   // spheres in a viscous liquid). Not in contact: over a contact stretched to fluid steps the force
-  // would press the sphere into its partner, swelling the contact's impulse and the friction's; the
-  // contact's velocity change enters the history as one change when it ends, as that of a real,
-  // short contact. The modes are dropped (their storage freed) once the resolved force acts.
+  // would press the sphere into its partner, swelling the contact's impulse and the friction's, and
+  // keep acting on a sphere held at the wall, where a real contact is over before the force has
+  // acted; the contact's velocity change enters the history as one change when it ends, as that of
+  // a real, short contact. The modes are dropped (their storage freed) once the resolved force acts.
   Vec3 halfKick(ParticleStore& s, std::size_t i, double half, const Vec3& F) const
   {
     const Vec3 dv = (half * s.invMass[i]) * F;
