@@ -67,6 +67,9 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
   }
   if (!missing.empty())
     failOption("-particles_file", "'" + path + "' header lacks column(s) " + missing + " (needs id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz)");
+  // Optional: fixed = 1 holds that particle (a rough wall of spheres), 0 leaves it free.
+  const auto fixedIt = std::find(header.begin(), header.end(), "fixed");
+  const long fixedColumn = fixedIt == header.end() ? -1 : fixedIt - header.begin();
   std::vector<ParticleRecord> out;
   std::vector<std::string> cells;
   long lineNo = 1;
@@ -91,6 +94,12 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
     }
     checkValues(v, where);
     out.push_back(fromColumns(v));
+    if (fixedColumn >= 0) {
+      std::string t = cells[fixedColumn];
+      t.erase(std::remove_if(t.begin(), t.end(), [](char ch) { return std::isspace(static_cast<unsigned char>(ch)); }), t.end());
+      if (t != "0" && t != "1") failOption("-particles_file", where + ": column fixed must be 0 or 1, got '" + t + "'");
+      if (t == "1") out.back().flags |= kFixed;
+    }
   }
   return out;
 }

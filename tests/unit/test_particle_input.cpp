@@ -112,6 +112,27 @@ TEST_CASE("CSV and HDF5 particle tables read the same particles", "[dem]")
   std::remove(h5.c_str());
 }
 
+TEST_CASE("CSV: an optional fixed column holds the particles marked 1 and rejects other values", "[dem]")
+{
+  const std::string csv = tempPath("fixed.csv");
+  auto write = [&](const char* third) {
+    std::ofstream f(csv);
+    f << "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,fixed\n"
+      << "0,0.1,0.1,0.1,0.01,1000,0,0,0,0,0,0,1\n"
+      << "1,0.2,0.1,0.1,0.01,1000,0,0,0,0,0,0, 0\n"
+      << "2,0.3,0.1,0.1,0.01,1000,0,0,0,0,0,0," << third << "\n";
+  };
+  write("1");
+  const auto p = readParticleCsv(csv);
+  REQUIRE(p.size() == 3);
+  CHECK(p[0].flags == kFixed);
+  CHECK(p[1].flags == 0);
+  CHECK(p[2].flags == kFixed);
+  write("0.5");
+  CHECK_THROWS_WITH(readParticleCsv(csv), Catch::Contains("line 4: column fixed must be 0 or 1, got '0.5'"));
+  std::remove(csv.c_str());
+}
+
 TEST_CASE("Particle validation names the problem", "[dem]")
 {
   Config c = boxConfig({0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4});
