@@ -166,7 +166,6 @@ def chute_particles(path, seed=1):
         for r in rows:
             z = a if r[4] else r[3]
             f.write("%d,%.9g,%.9g,%.9g,%g,2500,0,0,0,0,0,0,%d\n" % (r[0], r[1], r[2], z, a, r[4]))
-    return len(base)
 
 
 def chute(angle):
