@@ -22,7 +22,10 @@ usage: collapse.py [permeability|phic|stiffness] [--res 6,8,12] [--reuse]"""
 import glob, os, subprocess, sys
 import numpy as np
 import h5py
+from importlib.machinery import SourceFileLoader
 from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
+
+column_phi = SourceFileLoader("column_phi", os.path.join(root, "scripts", "column_phi")).load_module()
 
 STUDIES = ("permeability", "phic", "stiffness")
 what = chosen_study(__doc__, STUDIES, valued=("--res",))
@@ -33,6 +36,7 @@ D = 1e-3            # sphere diameter of the columns (m)
 MU, RHO = 0.1, 1000.0
 F = 5.0             # body force per unit mass (m/s^2): Darcy speed about 1e-4 m/s, Re_p 1e-3
 BOX = (0.021, 0.004, 0.018)
+GATE = 0.019        # where the columns were settled against the gate
 COLUMNS = ("loose", "dense")
 
 
@@ -52,17 +56,10 @@ def load_column(kind):
     return np.stack([data["x"], data["y"], data["z"]], axis=1), data["radius"]
 
 
-def window(x, r):
-    """The column's interior: one diameter from the back wall, the face, the floor and the top (the 97th
-    percentile of the spheres' tops), the whole slab across."""
-    top = np.percentile(x[:, 2] + r, 97)
-    face = np.max(x[:, 0] + r)
-    return (D, face - D), (D, top - D)
-
-
-def sphere_phi(x, r, wx, wz):
-    inside = (x[:, 0] > wx[0]) & (x[:, 0] < wx[1]) & (x[:, 2] > wz[0]) & (x[:, 2] < wz[1])
-    return np.sum(4 / 3 * np.pi * r[inside] ** 3) / ((wx[1] - wx[0]) * BOX[1] * (wz[1] - wz[0]))
+def column_interior(x, r):
+    """scripts/column_phi's window over the column (gate at 19 d): x and z bounds, and phi."""
+    lo, hi, phi, _ = column_phi.interior(x, r, 0.0, GATE, BOX[1])
+    return (lo[0], hi[0]), (lo[1], hi[1]), phi
 
 
 def run(kind, res, projection):
@@ -83,7 +80,7 @@ def run(kind, res, projection):
                "-output_dt", "0.01", "-monitor_every", "0", "-output_dir", out, "-output_overwrite"] + solver
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, cwd=root)
     x, r = load_column(kind)
-    wx, wz = window(x, r)
+    wx, wz, phi = column_interior(x, r)
     ks = []
     for path in sorted(glob.glob(os.path.join(out, "fields_*.h5")))[1:]:
         with h5py.File(path, "r") as f:
@@ -96,7 +93,7 @@ def run(kind, res, projection):
         sub = np.ix_((zc > wz[0]) & (zc < wz[1]), np.ones(ny, bool), (xc > wx[0]) & (xc < wx[1]))
         ks.append(MU * v[..., 1][sub].mean() / (RHO * F))
         phi_mask = chi[sub].mean()
-    return dict(k=np.array(ks), phi=sphere_phi(x, r, wx, wz), phi_mask=phi_mask)
+    return dict(k=np.array(ks), phi=phi, phi_mask=phi_mask)
 
 
 def permeability():
@@ -229,9 +226,7 @@ def phic():
     ii = np.linspace(0, I.max() * 1.1, 20)
     ax.plot(ii, phi_c + b * ii, "k--", label="phi_c %.3f %+.2f I" % (phi_c, b))
     for kind, c in zip(COLUMNS, ("C4", "C5")):
-        x, r = load_column(kind)
-        wx, wz = window(x, r)
-        ph = sphere_phi(x, r, wx, wz)
+        ph = column_interior(*load_column(kind))[2]
         print("column %s: phi %.3f, phi - phi_c = %+.3f" % (kind, ph, ph - phi_c))
         ax.axhline(ph, color=c, ls=":", label="shipped %s column" % kind)
     ax.set_xlabel("inertial number I")
