@@ -45,6 +45,7 @@ RunConfig RunConfig::read()
   RunConfig r;
   r.main = Config::read();
   r.collapse = CollapseConfig::read();
+  r.rheology = RheologyConfig::read();
   r.particles = ParticleConfig::read();
   r.penalization = PenalizationConfig::read();
   r.solvers = readSolverOptions();
@@ -58,6 +59,7 @@ void RunConfig::validate(MPI_Comm comm) const
 {
   main.validate();
   collapse.validate(particles.any());
+  rheology.validate(main, particles);
   particles.validate();
   penalization.validate();
   int ranks;
@@ -74,7 +76,7 @@ void RunConfig::validate(MPI_Comm comm) const
                                       " cells), got " + std::to_string(split[d]));
   }
   if (main.fluid.off && !particles.any())
-    failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random or -particle_position)");
+    failOption("-fluid_off", "a DEM-only run needs particles (-particles_file, -particles_lattice, -particles_random, -particles_packed or -particle_position)");
   if (main.fluid.off && particles.any() && !particles.contact.stiffnessGiven())
     failOption("-contact_tc", "a DEM-only run needs a contact stiffness: set -contact_tc, -contact_tc_steps or -contact_kn");
   if (!(particles.dragViscosity >= 0) || !std::isfinite(particles.dragViscosity))

@@ -10,6 +10,7 @@
 #include "vp/io/OutputDir.hpp"
 #include "vp/io/ParticleTracker.hpp"
 #include "vp/io/Probes.hpp"
+#include "vp/io/RheologyMonitor.hpp"
 #include "vp/io/RunRecord.hpp"
 #include "vp/particles/ParticleCheckpoint.hpp"
 #include <algorithm>
@@ -33,7 +34,7 @@ std::string hms(double seconds)
 } // namespace
 
 Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
-  : cfg_(rc.main), grid_(comm, cfg_.grid, cfg_.bc), particleCfg_(rc.particles), collapseCfg_(rc.collapse),
+  : cfg_(rc.main), grid_(comm, cfg_.grid, cfg_.bc), particleCfg_(rc.particles), collapseCfg_(rc.collapse), rheologyCfg_(rc.rheology),
     stepControl_(cfg_, particleCfg_.any()),
     snapshots_(cfg_.output.every, cfg_.output.dt, 0), checkpointSchedule_(cfg_.checkpoint.every, cfg_.checkpoint.dt, cfg_.checkpoint.dt),
     guard_(comm, cfg_)
@@ -67,6 +68,7 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     sampleVelocity(grid_, flow, 0, fluid_->velocity());
     samplePressure(grid_, flow, 0, fluid_->pressure());
     fluid_->applyBoundaryConditions();
+    if (dem_ && cfg_.fluid.init == InitFlow::Couette) startWithShear(flow);
   }
   if (penalization_) {
     buildMask(0);
@@ -74,8 +76,27 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     if (!restart) hydroForce(0);  // a restart has the fluid momentum inside each particle
   }
   if (dem_) particlesAtStart_ = dem_->diagnostics().particles;
+  if (rheologyCfg_.on) rheologyCfg_.validateCell(cfg_, dem_->particles(), comm);
   firstStep_ = step_;
   firstTime_ = time_;
+}
+
+// A sheared suspension starts in equilibrium with the flow: each free sphere at the velocity of the
+// Couette profile at its centre and spinning at half its vorticity (else the start is an impulse).
+void Simulation::startWithShear(const AnalyticFlow& flow)
+{
+  const GridConfig& g = cfg_.grid;
+  const Vec3 bottom{g.lo[0], g.lo[1], g.lo[2]}, top{g.lo[0], g.lo[1], g.hi[2]};
+  const double L = g.hi[2] - g.lo[2];
+  const Vec3 spin{-0.5 * (flow.velocity(1, top, 0) - flow.velocity(1, bottom, 0)) / L,
+                  0.5 * (flow.velocity(0, top, 0) - flow.velocity(0, bottom, 0)) / L, 0};
+  ParticleStore& s = dem_->particles();
+  for (std::size_t i = 0; i < s.nOwned; ++i) {
+    if (s.fixed(i)) continue;
+    for (int c = 0; c < 3; ++c) s.v[i][c] = flow.velocity(c, s.x[i], 0);
+    s.w[i] = spin;
+  }
+  dem_->syncGhosts();
 }
 
 void Simulation::openOutputs()
@@ -95,6 +116,8 @@ void Simulation::openOutputs()
   if (!cfg_.output.probes.empty() && !cfg_.fluid.off)
     monitors_.push_back(std::make_unique<Probes>(grid_, cfg_.output.probes, dir, resumeTime));
   if (collapseCfg_.on) monitors_.push_back(std::make_unique<CollapseMonitor>(grid_, collapseCfg_, dir, resumeTime));
+  if (rheologyCfg_.on)
+    monitors_.push_back(std::make_unique<RheologyMonitor>(grid_, cfg_, rheologyCfg_, *dem_, *penalization_, dir, resumeTime));
   monitors_.push_back(std::make_unique<Diagnostics>(comm, dir, dem_ != nullptr, cfg_.fluid.rho, resumeStep));
   if (restart_) {
     fields_->resume(restart_->fieldSnapshots);

@@ -2,11 +2,12 @@
 // The whole configuration of a run, read and validated once before anything is built or written
 // (docs/architecture.md, run lifecycle): fluid/grid/time/output (Config), particles with contact and
 // lubrication (ParticleConfig), penalization, the solver choices vpsolve interprets and the collapse
-// monitor.
+// and rheology monitors.
 #include "vp/core/Config.hpp"
 #include "vp/coupling/Penalization.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/io/CollapseMonitor.hpp"
+#include "vp/io/RheologyMonitor.hpp"
 #include "vp/particles/ParticleConfig.hpp"
 #include <mpi.h>
 
@@ -18,6 +19,7 @@ struct RunConfig {
   PenalizationConfig penalization;
   SolverOptions solvers;
   CollapseConfig collapse;
+  RheologyConfig rheology;
   bool allowUnknownOptions = false;  // -options_allow_unknown
   bool memoryCheck = true;           // -memory_check
 

@@ -9,6 +9,7 @@
 #include "vp/RunGuard.hpp"
 #include "vp/TimeStepControl.hpp"
 #include "vp/coupling/Penalization.hpp"
+#include "vp/fluid/AnalyticFlow.hpp"
 #include "vp/fluid/Projection.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/io/Checkpoint.hpp"
@@ -58,6 +59,7 @@ private:
   void penalize();
   void hydroForce(double dt);
   void buildMask(double dt);  // chi, u_s, theta from the particles' current state
+  void startWithShear(const AnalyticFlow& flow);  // -init_flow couette: the particles move with it
   void monitor(double dt) const;
   void printSetup() const;
   // The summary lines, the stage table and run.json's end (stop reason, figures).
@@ -67,6 +69,7 @@ private:
   Grid grid_;
   ParticleConfig particleCfg_;
   CollapseConfig collapseCfg_;
+  RheologyConfig rheologyCfg_;
   TimeStepControl stepControl_;
   std::unique_ptr<Projection> fluid_;
   std::unique_ptr<FieldWriter> fields_;
@@ -75,7 +78,7 @@ private:
   std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
   // The time series, tracked particles (with particles), probes (-probe), the collapse monitor
-  // (-collapse_monitor): each records the same steps (Monitor.hpp).
+  // (-collapse_monitor), the rheology monitor (-rheology_monitor): each records the same steps (Monitor.hpp).
   std::vector<std::unique_ptr<Monitor>> monitors_;
   std::unique_ptr<CheckpointWriter> checkpoints_;
   std::unique_ptr<RunState> restart_;              // the checkpoint's run state, until the outputs resume it

@@ -11,7 +11,7 @@ namespace {
 
 const char* const kFaceNames[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
 const char* const kBcNames[4] = {"wall", "slip", "periodic", "velocity"};
-const char* const kInitNames[4] = {"rest", "taylor_green", "abc", "poiseuille"};
+const char* const kInitNames[5] = {"rest", "taylor_green", "abc", "poiseuille", "couette"};
 
 std::vector<std::string> names(const char* const* v, int n) { return {v, v + n}; }
 
@@ -63,7 +63,7 @@ Config Config::read()
     c.fluid.mu = o.real("-fluid_mu", c.fluid.mu, "Fluid dynamic viscosity (Pa s)");
     c.fluid.bodyForce = o.vec3("-fluid_body_force", {}, "Body force per unit mass on the fluid ax,ay,az (m/s^2)");
     c.gravity = o.vec3("-gravity", {}, "Gravity gx,gy,gz (m/s^2); balanced by hydrostatic pressure in the fluid");
-    c.fluid.init = static_cast<InitFlow>(o.choice("-init_flow", names(kInitNames, 4), 0, "Initial flow"));
+    c.fluid.init = static_cast<InitFlow>(o.choice("-init_flow", names(kInitNames, 5), 0, "Initial flow"));
     c.fluid.initVelocity = o.real("-init_velocity", c.fluid.initVelocity, "Velocity amplitude of the analytic initial flows (m/s)");
   }
   {
@@ -165,6 +165,8 @@ void Config::validate() const
   }
   if (fluid.init == InitFlow::Poiseuille && (bc.periodic(1) || !bc.periodic(0)))
     failOption("-init_flow", "poiseuille needs periodic x and walls in y");
+  if (fluid.init == InitFlow::Couette && (bc.type[4] != BcType::Velocity || bc.type[5] != BcType::Velocity))
+    failOption("-init_flow", "couette needs moving walls in z (-bc_zlo velocity, -bc_zhi velocity)");
 }
 
 } // namespace vp

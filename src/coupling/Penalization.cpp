@@ -202,7 +202,7 @@ void Penalization::forCovered(const ParticleStore& s, F&& f) const
   }
 }
 
-void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const
+void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums)
 {
   sums.assign(kHydroSums * s.size(), 0.0);
   const double dV = grid_.cellVolume();
@@ -217,7 +217,28 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
       sum[m] += f[m];
       sum[3 + m] += t[m];
     }
+    if (stresslets_ && s.x[p].z >= stressletLo_ && s.x[p].z <= stressletHi_) {
+      const SymTensor m = symmetricProduct(r, f);
+      for (int k = 0; k < 6; ++k) stressletSum_[k] += m[k];
+    }
   });
+  stressletSteps_ += stresslets_;
+}
+
+void Penalization::enableStresslets(double zlo, double zhi)
+{
+  stresslets_ = true;
+  stressletLo_ = zlo;
+  stressletHi_ = zhi;
+}
+
+SymTensor Penalization::takeStresslets()
+{
+  SymTensor m = stressletSum_;
+  for (double& v : m) v /= std::max<long>(stressletSteps_, 1);
+  stressletSum_ = {};
+  stressletSteps_ = 0;
+  return m;
 }
 
 void Penalization::addFluidMomentum(const ParticleStore& s, Vec u, std::vector<double>& sums) const

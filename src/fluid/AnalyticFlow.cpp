@@ -6,7 +6,7 @@ namespace vp {
 
 AnalyticFlow::AnalyticFlow(const Config& cfg)
   : kind_(cfg.fluid.init), U_(cfg.fluid.initVelocity), nu_(cfg.fluid.nu()), rho_(cfg.fluid.rho),
-    fx_(cfg.fluid.bodyForce.x)
+    fx_(cfg.fluid.bodyForce.x), wallLo_(cfg.bc.velocity[4]), wallHi_(cfg.bc.velocity[5])
 {
   for (int d = 0; d < 3; ++d) {
     lo_[d] = cfg.grid.lo[d];
@@ -35,6 +35,8 @@ double AnalyticFlow::velocity(int c, const Vec3& x, double t) const
   }
   case InitFlow::Poiseuille:
     return c == 0 ? fx_ / (2 * nu_) * (x.y - lo_[1]) * (hi_[1] - x.y) : 0;
+  case InitFlow::Couette:
+    return wallLo_[c] + (wallHi_[c] - wallLo_[c]) * (x.z - lo_[2]) / (hi_[2] - lo_[2]);
   }
   return 0;
 }

@@ -172,6 +172,7 @@ void DemSolver::computeForces(double dt)
       const ContactForce f = contactForce(n, reach - r, vc, law, P.spring[k], dt);
       noteOverlap((reach - r) / (2 * amin), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
+      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], d, force);
       const Vec3 lever = scale * cross(n, f.tangential);
       const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR, s.radius[i], s.radius[j],
                                       s.invInertia[i] + s.invInertia[j], dt);
@@ -194,6 +195,7 @@ void DemSolver::computeForces(double dt)
       st.viscosity = mu_;
       const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, amin) : lub_, st, rough * (s.radius[i] + s.radius[j]));
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
+      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], d, l.forceI);
       force += l.forceI;
       torqueI += l.torqueI;
       torqueJ += l.torqueJ;
@@ -236,6 +238,7 @@ void DemSolver::computeForces(double dt)
           const ContactForce c = contactForce(n, overlap, vc, wallCoef, spring, dt);
           noteOverlap(overlap / (2 * a), s.id[i], -1 - f);
           F += c.normal + c.tangential;
+          if (stress_.on()) stress_.addWall(PairStress::Contact, f, c.normal + c.tangential);
           T -= dist * cross(n, c.tangential);
           T += rollingTorque(n, s.w[i], wallCoef.kn * overlap, wallCoef.muR, a, 0, s.invInertia[i], dt);
           ++wallContacts;
@@ -260,6 +263,7 @@ void DemSolver::computeForces(double dt)
           const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, a) : lub_, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           F += l.forceI;
+          if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, l.forceI);
           T += l.torqueI;
         }
       }
@@ -440,7 +444,10 @@ void DemSolver::advance(double, double dt)
   const double dtp = dt / pc_.substeps;
   handOff_.startSubsteps(dtp);
   lubWatch_ = lubWatch_ || dtp > lubStableSubstep_;
-  for (int m = 0; m < pc_.substeps; ++m) substep(dtp);
+  for (int m = 0; m < pc_.substeps; ++m) {
+    substep(dtp);
+    if (stress_.on()) stress_.endSubstep();
+  }
   if (lubWatch_) checkLubricationSeen(dtp);
 }
 

@@ -2,6 +2,7 @@
 #include "vp/core/Error.hpp"
 #include "vp/io/Hdf5.hpp"
 #include "vp/particles/CellBuckets.hpp"
+#include "vp/particles/Packing.hpp"
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -266,6 +267,12 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
   } else if (pc.random.set) {
     p = randomParticles(pc.random, pc.density);
     option = "-particles_random";
+  } else if (pc.packed.set) {
+    std::array<bool, 3> wrap{};
+    for (int d = 0; d < 3; ++d)  // periodic where the box spans the domain
+      wrap[d] = c.bc.periodic(d) && pc.packed.lo[d] <= c.grid.lo[d] && pc.packed.hi[d] >= c.grid.hi[d];
+    p = packedParticles(pc.packed, pc.density, wrap, pc.contact.roughness);
+    option = "-particles_packed";
   } else if (pc.single.set) {
     ParticleRecord r;
     r.id = 0;

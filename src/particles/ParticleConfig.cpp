@@ -64,6 +64,19 @@ ParticleConfig ParticleConfig::read()
       c.random.radius = rnd[7];
       c.random.seed = seed(rnd[8], "-particles_random");
     }
+    const std::vector<double> pk = o.reals("-particles_packed", 9, "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed",
+                                           "Dense random packing without overlaps, grown in the box x0,y0,z0,x1,y1,z1 to "
+                                           "volume_fraction (up to about 0.6), radius(m), seed");
+    if (!pk.empty()) {
+      c.packed.set = true;
+      c.packed.lo = {pk[0], pk[1], pk[2]};
+      c.packed.hi = {pk[3], pk[4], pk[5]};
+      c.packed.volumeFraction = pk[6];
+      c.packed.radius = pk[7];
+      c.packed.seed = seed(pk[8], "-particles_packed");
+    }
+    c.packed.sizeRatio = o.real("-particles_size_ratio", 1, "With -particles_packed: 1 monodisperse; > 1 bidisperse, equal "
+                                                            "volumes of spheres of the radius and of this times the radius");
     c.single.position = o.vec3("-particle_position", {}, "One particle at x,y,z (m)", &c.single.set);
     c.single.velocity = o.vec3("-particle_velocity", {}, "Its velocity (m/s)");
     c.single.angularVelocity = o.vec3("-particle_angular_velocity", {}, "Its angular velocity (rad/s)");
@@ -121,8 +134,9 @@ void ParticleConfig::validate() const
   };
   // Up to the hindered-settling resistance of dense packings (tens of times Stokes).
   if (!(implicitDrag >= 0 && implicitDrag <= 100)) failOption("-dem_implicit_drag", "must be in [0, 100]", implicitDrag);
-  int sources = !file.empty() + lattice.set + random.set + single.set;
-  if (sources > 1) failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particle_position");
+  int sources = !file.empty() + lattice.set + random.set + packed.set + single.set;
+  if (sources > 1)
+    failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particles_packed, -particle_position");
   positive(radius, "-particle_radius");
   positive(density, "-particle_density");
   if (lattice.set) {
@@ -140,6 +154,18 @@ void ParticleConfig::validate() const
     for (int d = 0; d < 3; ++d)
       if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) failOption("-particles_random", "box must be wider than a particle diameter along every axis");
   }
+  if (packed.set) {
+    positive(packed.radius, "-particles_packed");
+    if (!(packed.volumeFraction > 0 && packed.volumeFraction <= 0.6))
+      failOption("-particles_packed", "volume fraction must be in (0, 0.6] (a random packing jams near 0.64), got " +
+                                          formatNumber(packed.volumeFraction));
+    for (int d = 0; d < 3; ++d)
+      if (!(packed.hi[d] - packed.lo[d] > 2 * packed.radius * packed.sizeRatio))
+        failOption("-particles_packed", "box must be wider than the largest particle diameter along every axis");
+  }
+  if (!(packed.sizeRatio >= 1 && packed.sizeRatio <= 4))
+    failOption("-particles_size_ratio", "must be in [1, 4] (1: monodisperse), got " + formatNumber(packed.sizeRatio));
+  if (packed.sizeRatio != 1 && !packed.set) failOption("-particles_size_ratio", "applies to -particles_packed only");
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) failOption("-particles_max_overlap", "must be in [0, 0.5), got " + formatNumber(maxOverlap));
   contact.validate();
   if (contact.departureCells > 0 && lubrication.model == LubModel::None)

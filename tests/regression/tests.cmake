@@ -383,3 +383,26 @@ vp_bad_input(collapse_rest_window 1 "option -collapse_rest_window: must be > 0, 
 # with a longer time limit.
 set_tests_properties(rebound_converges_in_step departure_after_impact case_restitution_impact case_dam_break_front case_dam_break_dense
                      PROPERTIES LABELS slow TIMEOUT 600)
+# The shear cell (-rheology_monitor, docs/rheology.md): one torque-free sphere spins at gamma/2 with
+# the stresslet of Einstein's sphere, and the wall traction equals the bulk stress.
+add_test(NAME rheology_sphere COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_rheology_sphere.py $<TARGET_FILE:vpsolve>
+         ${CMAKE_CURRENT_BINARY_DIR}/rheology_sphere)
+set_tests_properties(rheology_sphere PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+# The shipped shear case to a strain of 0.6: the relative viscosity within 0.6-1.6x of Boyer et al.
+# and the bulk stress within 15 % of the wall traction once the stress has crossed the cell.
+add_test(NAME case_shear_suspension COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_shear_case.py $<TARGET_FILE:vpsolve>
+         ${VP_CASES}/shear_suspension.opts ${CMAKE_CURRENT_BINARY_DIR}/case_shear_suspension)
+set_tests_properties(case_shear_suspension PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow)
+vp_bad_input(rheology_no_shear 1 "option -bc_zhi_velocity: walls that do not shear"
+             -options_file ${VP_CASES}/shear_suspension.opts -bc_zhi_velocity -0.08,0,0)
+vp_bad_input(rheology_fixed_walls 1 "option -bc_zlo: the shear cell's walls move"
+             -options_file ${VP_CASES}/shear_suspension.opts -bc_zlo wall -bc_zlo_velocity 0,0,0 -init_flow rest)
+vp_bad_input(rheology_narrow_gap 1 "option -rheology_monitor: the shear cell's gap .* is 3 mean diameters: at least 4"
+             -options_file ${VP_CASES}/shear_suspension.opts -grid_hi 0.008,0.008,0.003 -grid_n 48,48,18
+             -particles_packed 0,0,0,0.008,0.008,0.003,0.3,5e-4,1)
+vp_bad_input(rheology_contact_hydro 1 "option -contact_hydro: the rheology monitor needs keep \\(given: limit\\)"
+             -options_file ${VP_CASES}/shear_suspension.opts -contact_hydro limit)
+vp_bad_input(packed_fraction 1 "option -particles_packed: volume fraction must be in \\(0, 0.6\\]"
+             -options_file ${VP_CASES}/shear_suspension.opts -particles_packed 0,0,0,0.008,0.008,0.016,0.7,5e-4,1)
+vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -particles_packed only"
+             -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particles_size_ratio 1.4)

@@ -3,6 +3,7 @@
 #include "../support/DemFixtures.hpp"
 #include "vp/core/Error.hpp"
 #include "vp/particles/Generators.hpp"
+#include "vp/particles/Packing.hpp"
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
@@ -67,6 +68,53 @@ TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by s
   in.volumeFraction = 0.35;  // within the option's range but beyond what this small box takes
   in.hi = {0.009, 0.009, 0.009};
   CHECK_THROWS_WITH(randomParticles(in, 2500), Catch::Contains("-particles_random") && Catch::Contains("lower the volume fraction"));
+}
+
+TEST_CASE("Dense packing: solid fraction beyond random addition, no contact, periodic images, bidisperse", "[dem]")
+{
+  PackedInput in;
+  in.set = true;
+  in.lo = {0, 0, 0};
+  in.hi = {0.006, 0.006, 0.008};
+  in.radius = 5e-4;
+  in.volumeFraction = 0.5;
+  in.seed = 2;
+  const double clearance = 0.01, volume = 0.006 * 0.006 * 0.008;
+  auto ball = [](double r) { return 4.0 / 3.0 * M_PI * r * r * r; };
+  // Periodic along x and y (a shear cell), walls along z: gaps by the nearest image.
+  auto smallestGap = [&](const std::vector<ParticleRecord>& p) {
+    double m = HUGE_VAL;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = i + 1; j < p.size(); ++j) {
+        Vec3 d = p[i].x - p[j].x;
+        for (int a = 0; a < 2; ++a) d[a] -= 0.006 * std::round(d[a] / 0.006);
+        m = std::min(m, norm(d) / (p[i].radius + p[j].radius) - 1);
+      }
+    return m;
+  };
+  const auto p = packedParticles(in, 1000, {true, true, false}, clearance);
+  double solid = 0;
+  for (const auto& r : p) {
+    solid += ball(r.radius);
+    CHECK((r.x.z >= r.radius && r.x.z <= 0.008 - r.radius));
+    CHECK((r.x.x >= 0 && r.x.x < 0.006));
+  }
+  CHECK(std::fabs(solid / volume - 0.5) < ball(in.radius) / volume);
+  CHECK(smallestGap(p) >= clearance);
+  CHECK(packedParticles(in, 1000, {true, true, false}, clearance)[50].x.x == p[50].x.x);
+
+  in.sizeRatio = 1.4;  // equal volumes of both sizes
+  const auto two = packedParticles(in, 1000, {true, true, false}, clearance);
+  double large = 0, small = 0;
+  for (const auto& r : two) (r.radius > in.radius ? large : small) += ball(r.radius);
+  CHECK(std::fabs(large / small - 1) < 0.1);
+  CHECK(smallestGap(two) >= clearance);
+
+  in.sizeRatio = 1;
+  in.volumeFraction = 0.6;  // in the option's range, but a box of two diameters with walls jams
+  in.hi = {0.002, 0.002, 0.002};
+  CHECK_THROWS_WITH(packedParticles(in, 1000, {false, false, false}, clearance),
+                    Catch::Contains("-particles_packed") && Catch::Contains("lower the volume fraction"));
 }
 
 TEST_CASE("CSV and HDF5 particle tables read the same particles", "[dem]")

@@ -32,7 +32,7 @@ struct BoundaryConfig {
   bool periodic(int axis) const { return type[2 * axis] == BcType::Periodic; }
 };
 
-enum class InitFlow { Rest, TaylorGreen, Abc, Poiseuille };
+enum class InitFlow { Rest, TaylorGreen, Abc, Poiseuille, Couette };
 
 struct FluidConfig {
   bool off = false;                        // -fluid_off: DEM only

@@ -9,6 +9,7 @@
 // as a sphere moves, so forces do not jump when faces change sides); sharp = 1 inside, 0 outside.
 #include "vp/core/Config.hpp"
 #include "vp/grid/Grid.hpp"
+#include "vp/particles/PairStress.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include <vector>
 
@@ -46,7 +47,13 @@ public:
   double lambda() const { return stepLambda_; }  // of the step last built
   // sums (kHydroSums per particle) resized and zeroed, then the force and torque of the
   // penalization on each particle, rho chi lambda (u* - u_s) dV, from the predicted velocity u*.
-  void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums) const;
+  void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums);
+  // From enableStresslets on, forces() also sums the first moment of the force density on the
+  // particles whose centre lies in lo <= z <= hi: sum over them of the integral of
+  // sym((x - x_p) (x) f) dV, f the force density the fluid exerts on them (the particles' stresslet,
+  // docs/rheology.md). takeStresslets: this rank's mean over the steps since the last take, then zero.
+  void enableStresslets(double zlo, double zhi);
+  SymTensor takeStresslets();
   // Adds the momentum and angular momentum of the fluid inside each particle (chi-weighted) to sums.
   void addFluidMomentum(const ParticleStore& s, Vec u, std::vector<double>& sums) const;
 
@@ -65,6 +72,10 @@ private:
   Vec chi_ = nullptr, us_ = nullptr, theta_ = nullptr, thetaUs_ = nullptr;
   std::vector<int> owner_;  // per owned face (3 per cell): particle with the largest chi, or -1
   std::vector<PetscInt> covered_;  // the owned faces with an owner, in increasing order
+  bool stresslets_ = false;
+  double stressletLo_ = 0, stressletHi_ = 0;
+  SymTensor stressletSum_{};  // since the last take
+  long stressletSteps_ = 0;
 };
 
 } // namespace vp

@@ -4,7 +4,8 @@
 //                 exp(-nu (kx^2 + ky^2) t) (periodic x, y; k = 2 pi / L),
 //   abc:          the Arnold-Beltrami-Childress flow with A = B = C = U, an exact 3-D solution in a
 //                 periodic cube (the convection is a pure gradient), decaying as exp(-nu k^2 t),
-//   poiseuille:   u = f_x / (2 nu) (y - y_lo)(y_hi - y), steady, between walls in y.
+//   poiseuille:   u = f_x / (2 nu) (y - y_lo)(y_hi - y), steady, between walls in y,
+//   couette:      the linear profile between the z walls' velocities, steady (a shear cell).
 #include "vp/core/Config.hpp"
 #include "vp/grid/Grid.hpp"
 
@@ -19,6 +20,7 @@ public:
 private:
   InitFlow kind_;
   double U_, nu_, rho_, fx_;
+  Vec3 wallLo_, wallHi_;  // z walls' velocities (couette)
   double lo_[3], hi_[3], k_[3];
 };
 

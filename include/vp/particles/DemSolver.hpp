@@ -11,6 +11,7 @@
 #include "vp/particles/ContactHandOff.hpp"
 #include "vp/particles/Exchange.hpp"
 #include "vp/particles/PairList.hpp"
+#include "vp/particles/PairStress.hpp"
 #include "vp/particles/ParticleConfig.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include "vp/particles/Walls.hpp"
@@ -64,6 +65,8 @@ public:
   // velocities); the fluid coupling builds its mask from them.
   void syncGhosts() { exchange_->updateGhosts(store_); }
   const ContactLaw& law() const { return law_; }
+  // The pairs' and walls' share of the stress, summed over the sub-steps once enabled (rheology).
+  PairStress& pairStress() { return stress_; }
   std::size_t rebuilds() const { return rebuilds_; }
   // Kinetic energy of this rank's free particles after the last sub-step (0 before any).
   double localKineticEnergy() const { return std::max(kineticEnergy_, 0.0); }
@@ -122,6 +125,7 @@ private:
   double kineticEnergy_ = -1;   // of the owned particles after the last sub-step (-1: none yet)
   std::size_t rebuilds_ = 0;
   OverlapRecord largestOverlap_;
+  PairStress stress_;
 };
 
 } // namespace vp

@@ -30,6 +30,15 @@ struct RandomInput {
   std::uint64_t seed = 0;
 };
 
+// -particles_packed and -particles_size_ratio (particles/Packing.hpp).
+struct PackedInput {
+  bool set = false;
+  Vec3 lo, hi;
+  double volumeFraction = 0, radius = 0;
+  double sizeRatio = 1;   // 1 monodisperse, > 1 bidisperse
+  std::uint64_t seed = 0;
+};
+
 // One particle from -particle_position (single-sphere cases).
 struct SingleInput {
   bool set = false;
@@ -41,6 +50,7 @@ struct ParticleConfig {
   std::string file;           // -particles_file: CSV (.csv) or HDF5 table (.h5)
   LatticeInput lattice;
   RandomInput random;
+  PackedInput packed;
   SingleInput single;
   double radius = 1e-3;       // -particle_radius [m] (single particle, lattice/random default)
   double density = 2500;      // -particle_density [kg/m^3] (single, lattice, random)
@@ -57,7 +67,7 @@ struct ParticleConfig {
   bool trackAll = false;      // -track_particles all
   std::vector<std::int64_t> track; // -track_particles id,id,...
 
-  bool any() const { return !file.empty() || lattice.set || random.set || single.set; }
+  bool any() const { return !file.empty() || lattice.set || random.set || packed.set || single.set; }
 
   static ParticleConfig read();
   void validate() const;
