@@ -13,7 +13,8 @@ ContactLaw::ContactLaw(const ContactConfig& c, double dtFluid)
     roughness_(c.roughness),
     lnEt_(c.restitutionT > 0 ? std::log(c.restitutionT) : 0),
     tangentialRestitution_(c.restitutionT > 0),
-    muR_(c.rollingFriction)
+    muR_(c.rollingFriction),
+    criticalLoad_(c.criticalLoad)
 {
 }
 
@@ -43,6 +44,7 @@ ContactCoefficients ContactLaw::coefficients(double meff, bool wall) const
   }
   k.mu = mu_;
   k.muR = muR_;
+  k.criticalLoad = criticalLoad_;
   return k;
 }
 

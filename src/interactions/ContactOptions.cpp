@@ -31,6 +31,9 @@ ContactConfig readContactOptions()
   k.ktRatio = o.real("-contact_kt_ratio", k.ktRatio, "Tangential / normal stiffness k_t/k_n (without -contact_restitution_t)");
   k.gtRatio = o.real("-contact_damping_t_ratio", k.gtRatio, "Tangential / normal damping gamma_t/gamma_n (without -contact_restitution_t)");
   k.roughness = o.real("-contact_roughness", k.roughness, "Surface gap at which contact starts, fraction of the (mean) diameter");
+  k.criticalLoad = o.real("-contact_critical_load", k.criticalLoad,
+                          "Critical load model (N): Coulomb friction acts only on contacts whose normal force exceeds it, "
+                          "frictionless below (0: always; stress scale sigma* = F_CL / (6 pi a^2), docs/rheology.md)");
   k.rollingFriction = o.real("-contact_rolling_friction", k.rollingFriction,
                              "Rolling resistance mu_r: a torque mu_r R* k_n delta against the relative rolling (0: none)");
   k.hydro = static_cast<ContactHydro>(o.choice("-contact_hydro", {"keep", "exclude", "limit"}, static_cast<int>(k.hydro),
@@ -62,6 +65,8 @@ void ContactConfig::validate() const
   if (!(gtRatio >= 0 && gtRatio <= 1)) failOption("-contact_damping_t_ratio", "must be in [0, 1]", gtRatio);
   if (!(roughness >= 0 && roughness < 0.5)) failOption("-contact_roughness", "must be in [0, 0.5)", roughness);
   if (!(rollingFriction >= 0 && rollingFriction <= 1)) failOption("-contact_rolling_friction", "must be in [0, 1]", rollingFriction);
+  if (!(criticalLoad >= 0) || !std::isfinite(criticalLoad))
+    failOption("-contact_critical_load", "must be >= 0 (N; 0: friction on every contact)", criticalLoad);
   if (!(departureCells >= 0 && departureCells <= 4)) failOption("-contact_hydro_departure", "must be in [0, 4] grid cells", departureCells);
   if (hydroHistory && !(departureCells > 0))
     failOption("-contact_hydro_history", "needs -contact_hydro_departure (the force acts out of contact, while a sphere departs)");

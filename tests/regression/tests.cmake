@@ -406,3 +406,5 @@ vp_bad_input(packed_fraction 1 "option -particles_packed: volume fraction must b
              -options_file ${VP_CASES}/shear_suspension.opts -particles_packed 0,0,0,0.008,0.008,0.016,0.7,5e-4,1)
 vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -particles_packed only"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particles_size_ratio 1.4)
+vp_bad_input(contact_critical_load 1 "option -contact_critical_load: must be >= 0 \\(N; 0: friction on every contact\\), got -1"
+             -contact_critical_load -1)

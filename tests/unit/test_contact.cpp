@@ -51,6 +51,33 @@ TEST_CASE("contactForce: spring-dashpot, tangential spring, Coulomb cap", "[cont
   }
 }
 
+TEST_CASE("contactForce: the critical load model, frictionless below F_CL and Coulomb above", "[contact]")
+{
+  ContactCoefficients c;
+  c.kn = 1000;
+  c.kt = 300;
+  c.mu = 0.5;
+  c.criticalLoad = 0.5;  // N
+  const Vec3 n{0, 0, 1}, vc{0.2, 0, 0};
+  Vec3 spring{1e-4, 0, 0};
+  // 1e-4 m deep: F_n = 0.1 N, below the critical load: no tangential force, the spring dropped.
+  ContactForce f = contactForce(n, 1e-4, vc, c, spring, 1e-3);
+  CHECK(f.normal.z == Approx(0.1));
+  CHECK(norm(f.tangential) == 0);
+  CHECK(norm(spring) == 0);
+  // 1e-3 m deep: F_n = 1 N, above it: the spring stretches by v_t dt, the force -k_t s is below the cap.
+  f = contactForce(n, 1e-3, vc, c, spring, 1e-3);
+  CHECK(f.tangential.x == Approx(-300 * 2e-4));
+  // Sliding: capped at mu F_n as without the model.
+  f = contactForce(n, 1e-3, {20, 0, 0}, c, spring, 1e-3);
+  CHECK(norm(f.tangential) == Approx(0.5 * 1.0));
+  // Without the model (0) friction acts at any load: 0.1 N carries 0.03 N (cap 0.05 N).
+  c.criticalLoad = 0;
+  spring = Vec3{};
+  f = contactForce(n, 1e-4, {0.1, 0, 0}, c, spring, 1e-3);
+  CHECK(f.tangential.x == Approx(-300 * 1e-4));
+}
+
 TEST_CASE("rollingTorque: against the relative rolling, capped so that it cannot reverse it", "[contact]")
 {
   const Vec3 n{0, 0, 1};

@@ -26,6 +26,7 @@ struct ContactConfig {
   double gtRatio = 0.5;       // gamma_t / gamma_n (without xi_t)
   double roughness = 0;       // contact starts at this surface gap, as a fraction of the diameter
   double rollingFriction = 0; // mu_r: rolling resistance torque mu_r R* k_n delta (0: none)
+  double criticalLoad = 0;    // Coulomb friction only above this normal force [N] (0: always)
   ContactHydro hydro = ContactHydro::Limit;  // measured: docs/collisions.md
   // With Limit: a sphere leaving a wall or another sphere after an impact keeps its resolved force
   // excluded, and gets the lubrication correction from this gap, until its gap exceeds this many grid

@@ -10,9 +10,10 @@
 namespace vp {
 
 // Coefficients of one contact: F_n = k_n delta - g_n v_n, F_t = -k_t s - g_t v_t, |F_t| <= mu |F_n|;
-// rolling resistance |T_r| <= muR R* k_n delta.
+// rolling resistance |T_r| <= muR R* k_n delta; with criticalLoad > 0 the contact is frictionless
+// while F_n <= criticalLoad (the critical load model of Seto, Mari, Morris & Denn 2013).
 struct ContactCoefficients {
-  double kn = 0, gn = 0, kt = 0, gt = 0, mu = 0, muR = 0;
+  double kn = 0, gn = 0, kt = 0, gt = 0, mu = 0, muR = 0, criticalLoad = 0;
 };
 
 // Turns the options into per-contact coefficients for an effective mass m* (wall: m* = m_i).
@@ -34,7 +35,7 @@ private:
   double tc_ = 0, kn_ = 0, knWall_ = 0, lnE_ = 0, mu_ = 0, ktRatio_ = 0, gtRatio_ = 0, roughness_ = 0;
   double lnEt_ = 0;  // ln xi_t; 0 with xi_t unset (the ratios apply)
   bool tangentialRestitution_ = false;
-  double muR_ = 0;
+  double muR_ = 0, criticalLoad_ = 0;
 };
 
 struct ContactForce {
@@ -48,12 +49,17 @@ struct ContactForce {
 // The old spring is first brought onto the current tangent plane by projection (a rotation to
 // first order in the normal's turn theta per step; its length shrinks by theta^2 / 2), then
 // stretched by v_t dt; if the trial force exceeds mu |F_n| the force is capped and the spring reset to the
-// length that gives exactly the capped force (gross sliding).
+// length that gives exactly the capped force (gross sliding). Below a critical load the contact has
+// no tangential force and keeps no spring.
 inline ContactForce contactForce(const Vec3& n, double overlap, const Vec3& vc, const ContactCoefficients& c,
                                  Vec3& spring, double dt)
 {
   const double vn = dot(vc, n);
   const double fnMag = c.kn * overlap - c.gn * vn;
+  if (c.criticalLoad > 0 && fnMag <= c.criticalLoad) {
+    spring = Vec3{};
+    return {fnMag * n, Vec3{}};
+  }
   const Vec3 vt = vc - vn * n;
   spring -= dot(spring, n) * n;
   spring += dt * vt;
