@@ -54,27 +54,20 @@ ParticleConfig ParticleConfig::read()
       c.lattice.jitter = lat[8];
       c.lattice.seed = seed(lat[9], "-particles_lattice");
     }
-    const std::vector<double> rnd = o.reals("-particles_random", 9, "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed",
-                                            "Random packing x0,y0,z0,x1,y1,z1,volume_fraction,radius(m),seed");
-    if (!rnd.empty()) {
-      c.random.set = true;
-      c.random.lo = {rnd[0], rnd[1], rnd[2]};
-      c.random.hi = {rnd[3], rnd[4], rnd[5]};
-      c.random.volumeFraction = rnd[6];
-      c.random.radius = rnd[7];
-      c.random.seed = seed(rnd[8], "-particles_random");
-    }
-    const std::vector<double> pk = o.reals("-particles_packed", 9, "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed",
-                                           "Dense random packing without overlaps, grown in the box x0,y0,z0,x1,y1,z1 to "
-                                           "volume_fraction (up to about 0.6), radius(m), seed");
-    if (!pk.empty()) {
-      c.packed.set = true;
-      c.packed.lo = {pk[0], pk[1], pk[2]};
-      c.packed.hi = {pk[3], pk[4], pk[5]};
-      c.packed.volumeFraction = pk[6];
-      c.packed.radius = pk[7];
-      c.packed.seed = seed(pk[8], "-particles_packed");
-    }
+    // x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed
+    auto boxFraction = [&](const char* name, const char* help, RandomInput& in) {
+      const std::vector<double> v = o.reals(name, 9, "x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed", help);
+      if (v.empty()) return;
+      in.set = true;
+      in.lo = {v[0], v[1], v[2]};
+      in.hi = {v[3], v[4], v[5]};
+      in.volumeFraction = v[6];
+      in.radius = v[7];
+      in.seed = seed(v[8], name);
+    };
+    boxFraction("-particles_random", "Random packing x0,y0,z0,x1,y1,z1,volume_fraction,radius(m),seed", c.random);
+    boxFraction("-particles_packed", "Dense random packing without overlaps, grown in the box x0,y0,z0,x1,y1,z1 to "
+                                     "volume_fraction (up to about 0.6), radius(m), seed", c.packed);
     c.packed.sizeRatio = o.real("-particles_size_ratio", 1, "With -particles_packed: 1 monodisperse; > 1 bidisperse, equal "
                                                             "volumes of spheres of the radius and of this times the radius");
     c.single.position = o.vec3("-particle_position", {}, "One particle at x,y,z (m)", &c.single.set);

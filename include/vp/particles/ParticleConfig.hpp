@@ -30,13 +30,9 @@ struct RandomInput {
   std::uint64_t seed = 0;
 };
 
-// -particles_packed and -particles_size_ratio (particles/Packing.hpp).
-struct PackedInput {
-  bool set = false;
-  Vec3 lo, hi;
-  double volumeFraction = 0, radius = 0;
+// -particles_packed (the same nine values) and -particles_size_ratio (particles/Packing.hpp).
+struct PackedInput : RandomInput {
   double sizeRatio = 1;   // 1 monodisperse, > 1 bidisperse
-  std::uint64_t seed = 0;
 };
 
 // One particle from -particle_position (single-sphere cases).
