@@ -113,6 +113,12 @@ double lubricationResistance(const LubricationParams& p, const PairState& geomet
   PairState s = geometry;
   const double a = std::min(s.radiusI, s.radiusJ);
   s.gap = std::max(p.saturation * a, contactGap * (1 + 1e-12));
+  return squeezeResistance(p, s, contactGap);
+}
+
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap)
+{
+  PairState s = state;
   s.velocityI = s.normal;  // unit approach speed
   s.velocityJ = s.angularVelocityI = s.angularVelocityJ = Vec3{};
   return std::fabs(dot(lubricationForce(p, s, contactGap).forceI, s.normal));

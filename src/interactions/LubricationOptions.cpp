@@ -23,6 +23,10 @@ LubricationParams readLubricationOptions()
                                                          "(0: the contact roughness, or 4e-4 without one)");
   p.llcmRegion = o.real("-lub_llcm_r0", p.llcmRegion,
                         "LLCM lubrication-region radius r0 in units of the reduced radius (<= 1 keeps the parabolic gap valid)");
+  p.implicitSqueeze = o.choice("-lub_integration", {"explicit", "implicit"}, 0,
+                               "Normal (squeeze) lubrication in the DEM sub-steps: explicit (stable below the smallest gap's "
+                               "relaxation time m* / c), or implicit in each sphere's own velocity (stable at any sub-step; "
+                               "docs/lubrication.md)") == 1;
   if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);

@@ -62,7 +62,8 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   lub_.checkRadius(rmax_);
   if (lub_.model != LubModel::None) {
     lubGap_ = std::max(lub_.activationGap(rmax_), handOff_.departureGap());  // pairs stay listed while they depart
-    lubStableSubstep_ = 0.5 / lubricationRate(all);
+    // Implicit squeeze: the explicit bound is gone (the tangential terms' logarithmic resistance stays explicit).
+    lubStableSubstep_ = lub_.implicitSqueeze ? HUGE_VAL : 0.5 / lubricationRate(all);
   }
   // Halo: the farthest partner of a particle at list build (contact or lubrication range + skin).
   // Also every sphere that reaches into the subdomain with its penalization mask.
@@ -137,6 +138,7 @@ void DemSolver::computeForces(double dt)
   handOff_.startForces(s);
   long contacts = 0;
   const bool lubricated = lub_.model != LubModel::None;
+  if (lub_.implicitSqueeze) squeezePairs_.clear();
   for (std::size_t k = 0; k < P.size(); ++k) {
     const std::uint32_t i = P.first[k], j = P.second[k];
     const Vec3 d = s.x[i] - s.x[j];
@@ -193,8 +195,15 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityI = s.w[i];
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
-      const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, amin) : lub_, st, rough * (s.radius[i] + s.radius[j]));
+      const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, amin) : lub_;
+      PairForce l = lubricationForce(film, st, rough * (s.radius[i] + s.radius[j]));
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
+      if (lub_.implicitSqueeze) {
+        // The squeeze c (dh/dt) n leaves the explicit force: each sphere takes it implicitly (substep).
+        const double c = squeezeResistance(film, st, rough * (s.radius[i] + s.radius[j]));
+        l.forceI -= (c * dot(s.v[j] - s.v[i], st.normal)) * st.normal;
+        squeezePairs_.push_back({i, j, -1, c, st.normal, d});
+      }
       if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], d, l.forceI);
       force += l.forceI;
       torqueI += l.torqueI;
@@ -260,8 +269,14 @@ void DemSolver::computeForces(double dt)
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
           st.slipWall = wall.slip;
-          const PairForce l = lubricationForce(leaving ? handOff_.departureFilm(lub_, a) : lub_, st, 2 * rough * a);
+          const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, a) : lub_;
+          PairForce l = lubricationForce(film, st, 2 * rough * a);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
+          if (lub_.implicitSqueeze) {
+            const double c = squeezeResistance(film, st, 2 * rough * a);
+            l.forceI -= (c * dot(wall.velocity - s.v[i], st.normal)) * st.normal;
+            squeezePairs_.push_back({i, 0, f, c, st.normal, st.normal});
+          }
           F += l.forceI;
           if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, l.forceI);
           T += l.torqueI;
@@ -325,6 +340,26 @@ void DemSolver::substep(double dt)
   // steps per contact).
   // Fixed particles have zero inverse mass and inertia: their velocities stay as given (a prescribed
   // motion, at rest by default), with no branch.
+  if (lub_.implicitSqueeze) {
+    // Each half kick ends with the squeeze over the half step, implicitly (solveSqueeze).
+    std::vector<Vec3> dv(s.nOwned), dw(s.nOwned);
+    for (std::size_t i = 0; i < s.nOwned; ++i) {
+      dv[i] = Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
+      dw[i] = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
+      s.v[i] += dv[i];
+      s.w[i] += dw[i];
+      if (Hydro) relax(i, half, s.v[i], s.w[i]);
+    }
+    solveSqueeze(half);
+    for (std::size_t i = 0; i < s.nOwned; ++i) {
+      s.vHalf[i] = s.v[i];
+      s.wHalf[i] = s.w[i];
+      s.x[i] += dt * s.vHalf[i];
+      s.v[i] = s.vHalf[i] + dv[i];
+      s.w[i] = s.wHalf[i] + dw[i];
+      if (Hydro) relax(i, half, s.v[i], s.w[i]);
+    }
+  } else {
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     const Vec3 dv = Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
     const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
@@ -335,6 +370,7 @@ void DemSolver::substep(double dt)
     s.v[i] = s.vHalf[i] + dv;
     s.w[i] = s.wHalf[i] + dw;
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
+  }
   }
   // A loop of its own: independent rotations pipeline better than inside the kick.
   if (pc_.orientation)
@@ -352,6 +388,83 @@ void DemSolver::substep(double dt)
     if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
   }
   kineticEnergy_ = 0.5 * ke;
+  if (lub_.implicitSqueeze) {
+    solveSqueeze(half);
+    ke = 0;
+    for (std::size_t i = 0; i < s.nOwned; ++i)
+      if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
+    kineticEnergy_ = 0.5 * ke;
+    if (stress_.on()) addSqueezeStress();
+  }
+}
+
+// -lub_integration implicit: the squeeze of every lubricated pair over a half kick dt, at its end,
+// (M + dt C) v = M v*, with C the squeeze resistances c n n^T of the pairs and walls. Solved by Jacobi
+// sweeps, each sphere's 3 x 3 block exactly (Cramer's rule) against its partners' last velocities,
+// with a ghost update between sweeps: the same sweeps on any rank count (bitwise), until the largest
+// change is below 1e-10 of the largest speed (docs/lubrication.md).
+void DemSolver::solveSqueeze(double dt)
+{
+  ParticleStore& s = store_;
+  const std::size_t n = s.nOwned;
+  std::vector<std::array<double, 9>> D(s.size());  // per sphere: sum of c n n^T (row-major)
+  for (const SqueezePair& p : squeezePairs_)
+    for (std::size_t k : {p.i, p.j}) {
+      if (k == p.j && p.wall >= 0) continue;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) D[k][3 * a + b] += p.c * p.n[a] * p.n[b];
+    }
+  const std::vector<Vec3> vStar(s.v.begin(), s.v.begin() + n);
+  std::vector<Vec3> B(s.size()), next(n);
+  auto det = [](const double M[9]) {
+    return M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]);
+  };
+  const MPI_Comm comm = grid_.comm();
+  for (int sweep = 0;; ++sweep) {
+    std::fill(B.begin(), B.end(), Vec3{});
+    for (const SqueezePair& p : squeezePairs_) {
+      const Vec3 partner = p.wall >= 0 ? walls_[p.wall].velocity : s.v[p.j];
+      B[p.i] += (p.c * dot(p.n, partner)) * p.n;
+      if (p.wall < 0) B[p.j] += (p.c * dot(p.n, s.v[p.i])) * p.n;
+    }
+    double local[2] = {0, 0};  // largest change, largest speed
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = dt * s.invMass[i];
+      double A[9];
+      Vec3 r = vStar[i] + w * B[i];
+      for (int k = 0; k < 9; ++k) A[k] = (k % 4 == 0) + w * D[i][k];
+      const double d = det(A);
+      for (int col = 0; col < 3; ++col) {
+        double M[9];
+        for (int k = 0; k < 9; ++k) M[k] = k % 3 == col ? r[k / 3] : A[k];
+        next[i][col] = det(M) / d;
+      }
+      local[0] = std::max(local[0], norm(next[i] - s.v[i]));
+      local[1] = std::max(local[1], norm(next[i]));
+    }
+    std::copy(next.begin(), next.end(), s.v.begin());
+    exchange_->updateGhosts(s);
+    MPI_Allreduce(MPI_IN_PLACE, local, 2, MPI_DOUBLE, MPI_MAX, comm);
+    if (local[0] <= 1e-10 * local[1]) return;
+    if (sweep == 10000)
+      throw StepFailure("option -lub_integration implicit: the squeeze did not converge in 10000 sweeps (change " +
+                        std::to_string(local[0]) + " m/s); lower the sub-step (-dem_substeps)");
+  }
+}
+
+// The squeeze forces the sub-step applied, from the updated velocities, into the pair stress.
+void DemSolver::addSqueezeStress()
+{
+  const ParticleStore& s = store_;
+  for (const SqueezePair& p : squeezePairs_) {
+    if (p.i >= s.nOwned) continue;  // a pair counts on the rank that owns its first sphere
+    const Vec3 partner = p.wall >= 0 ? walls_[p.wall].velocity : s.v[p.j];
+    const Vec3 force = (p.c * dot(partner - s.v[p.i], p.n)) * p.n;
+    if (p.wall >= 0)
+      stress_.addWall(PairStress::Lubrication, p.wall, force);
+    else
+      stress_.addPair(PairStress::Lubrication, s.x[p.i], p.d, force);
+  }
 }
 
 double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const

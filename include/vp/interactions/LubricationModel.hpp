@@ -41,6 +41,9 @@ struct LubricationParams {
   // contact roughness gap (2 * -contact_roughness, which is a fraction of the diameter).
   double saturation = 0;
   double llcmRegion = 1; // R0 = r0 / R, radius of the LLCM lubrication region in reduced radii
+  // -lub_integration implicit: the squeeze (normal) part taken implicitly in the DEM sub-steps
+  // (DemSolver), so that the sub-step is not bounded by the smallest gap's relaxation time.
+  bool implicitSqueeze = false;
 
   // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
   // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a
@@ -73,5 +76,8 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
 // max(h_sat, contactGap)); an explicit dashpot c on a reduced mass m is stable for dt < m / c with
 // the DEM's integrator (docs/lubrication.md).
 double lubricationResistance(const LubricationParams& p, const PairState& geometry, double contactGap);
+// The normal resistance c = |F_n| / U_n of the correction at the state's own gap: the squeeze force
+// on i is c (dh/dt) n, n from i to j (-lub_integration implicit takes it out of the explicit force).
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap);
 
 } // namespace vp

@@ -81,6 +81,16 @@ private:
   bool needRebuild() const;
   void rebuild();
   void addStokesDrag();
+  // -lub_integration implicit: the squeezing pairs of the sub-step (wall < 0: sphere j; else that
+  // wall face), their resistance c, the normal n from i to the partner, d = x_i - x_j for the stress.
+  struct SqueezePair {
+    std::size_t i, j;
+    int wall;
+    double c;
+    Vec3 n, d;
+  };
+  void solveSqueeze(double dt);
+  void addSqueezeStress();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
@@ -126,6 +136,7 @@ private:
   std::size_t rebuilds_ = 0;
   OverlapRecord largestOverlap_;
   PairStress stress_;
+  std::vector<SqueezePair> squeezePairs_;
 };
 
 } // namespace vp
