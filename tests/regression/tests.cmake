@@ -392,7 +392,7 @@ set_tests_properties(rheology_sphere PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROC
 # and the bulk stress within 15 % of the wall traction once the stress has crossed the cell.
 add_test(NAME case_shear_suspension COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_shear_case.py $<TARGET_FILE:vpsolve>
          ${VP_CASES}/shear_suspension.opts ${CMAKE_CURRENT_BINARY_DIR}/case_shear_suspension)
-set_tests_properties(case_shear_suspension PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow)
+set_tests_properties(case_shear_suspension PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow TIMEOUT 600)
 vp_bad_input(rheology_no_shear 1 "option -bc_zhi_velocity: walls that do not shear"
              -options_file ${VP_CASES}/shear_suspension.opts -bc_zhi_velocity -0.08,0,0)
 vp_bad_input(rheology_fixed_walls 1 "option -bc_zlo: the shear cell's walls move"
