@@ -415,6 +415,7 @@ void DemSolver::solveSqueeze(double dt)
         for (int b = 0; b < 3; ++b) D[k][3 * a + b] += p.c * p.n[a] * p.n[b];
     }
   const std::vector<Vec3> vStar(s.v.begin(), s.v.begin() + n);
+  exchange_->updateGhosts(s);  // the first sweep sees every partner's v* (bitwise on any rank count)
   std::vector<Vec3> B(s.size()), next(n);
   auto det = [](const double M[9]) {
     return M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]);
