@@ -46,6 +46,8 @@ LubricationParams readLubricationOptions()
     what << "must be below -lub_activation (" << p.activation << ")";
     failOption("-lub_saturation", what.str(), p.saturation);
   }
+  if (p.implicitSqueeze && p.model == LubModel::None)
+    failOption("-lub_integration", "implicit integrates the lubrication's squeeze: it needs -lub_model blcm or llcm");
   if (!(p.llcmRegion > 0 && std::isfinite(p.llcmRegion)))
     failOption("-lub_llcm_r0", "must be > 0", p.llcmRegion);
   return p;

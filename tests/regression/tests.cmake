@@ -408,3 +408,5 @@ vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -parti
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particles_size_ratio 1.4)
 vp_bad_input(contact_critical_load 1 "option -contact_critical_load: must be >= 0 \\(N; 0: friction on every contact\\), got -1"
              -contact_critical_load -1)
+vp_bad_input(lub_integration_without_model 1 "option -lub_integration: implicit integrates the lubrication's squeeze: it needs -lub_model blcm or llcm"
+             -lub_integration implicit)
