@@ -409,11 +409,11 @@ void DemSolver::solveSqueeze(double dt)
   const std::size_t n = s.nOwned;
   std::vector<std::array<double, 9>> D(s.size());  // per sphere: sum of c n n^T (row-major)
   for (const SqueezePair& p : squeezePairs_)
-    for (std::size_t k : {p.i, p.j}) {
-      if (k == p.j && p.wall >= 0) continue;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) D[k][3 * a + b] += p.c * p.n[a] * p.n[b];
-    }
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        D[p.i][3 * a + b] += p.c * p.n[a] * p.n[b];
+        if (p.wall < 0) D[p.j][3 * a + b] += p.c * p.n[a] * p.n[b];
+      }
   const std::vector<Vec3> vStar(s.v.begin(), s.v.begin() + n);
   exchange_->updateGhosts(s);  // the first sweep sees every partner's v* (bitwise on any rank count)
   std::vector<Vec3> B(s.size()), next(n);
