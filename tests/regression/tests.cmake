@@ -30,7 +30,7 @@ vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -outpu
 vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)
 vp_bad_input(grid_n_two_values 1 "option -grid_n: needs 3 comma-separated values \\(x,y,z\\), got 2" -grid_n 8,8)
 vp_bad_input(cfl_out_of_range 1 "option -time_cfl: must be in \\(0, 1\\], got 2" -time_cfl 2)
-vp_bad_input(unknown_init_flow 1 "option -init_flow: unknown value 'vortex' \\(valid: rest, taylor_green, abc, poiseuille\\)" -init_flow vortex)
+vp_bad_input(unknown_init_flow 1 "option -init_flow: unknown value 'vortex' \\(valid: rest, taylor_green, abc, poiseuille, couette\\)" -init_flow vortex)
 
 # Short runs of the shipped cases: output contract and stored reference values (kinetic energy
 # after 20 steps, written by this code; the physics is checked by the convergence tests).
