@@ -6,6 +6,20 @@
 using namespace vp;
 using namespace vp::test;
 
+namespace {
+
+// The particles after `steps` DEM steps of dt on comm (every rank gets every particle's state).
+std::vector<State> advanced(MPI_Comm comm, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& p,
+                            int steps, double dt)
+{
+  Grid grid(comm, c.grid, c.bc);
+  DemSolver dem(grid, c, resolved(c, pc), p);
+  for (int k = 0; k < steps; ++k) dem.advance(k * dt, dt);
+  return gatherState(comm, dem.particles());
+}
+
+} // namespace
+
 TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, momentum conserved", "[mpi][particles][lub]")
 {
   Config c = boxConfig({0, 0, 0}, {0.04, 0.01, 0.01}, {12, 2, 2});
@@ -15,15 +29,8 @@ TEST_CASE("Lubricated head-on approach across ranks: bitwise one-rank result, mo
   // Approaching along x and sliding past each other in y, spinning: squeeze plus shear torques.
   const std::vector<ParticleRecord> p = {sphere(1, {0.02 - a * 1.2, 0.005, 0.005}, a, 1000, {0.01, 0.002, 0}, {0, 0, 5}),
                                          sphere(2, {0.02 + a * 1.2, 0.0052, 0.005}, a, 1000, {-0.01, 0, 0})};
-  const double dt = 2e-6;
-  auto run = [&](MPI_Comm comm) {
-    Grid grid(comm, c.grid, c.bc);
-    DemSolver dem(grid, c, resolved(c, pc), p);
-    for (int k = 0; k < 5000; ++k) dem.advance(k * dt, dt);
-    return gatherState(comm, dem.particles());
-  };
-  const std::vector<State> parallel = run(PETSC_COMM_WORLD);
-  const std::vector<State> serial = run(PETSC_COMM_SELF);
+  const std::vector<State> parallel = advanced(PETSC_COMM_WORLD, c, pc, p, 5000, 2e-6);
+  const std::vector<State> serial = advanced(PETSC_COMM_SELF, c, pc, p, 5000, 2e-6);
   REQUIRE(parallel.size() == 2);
   CHECK(bitwiseEqual(parallel, serial));
   // Equal masses: the velocity sum is conserved.
@@ -56,15 +63,8 @@ TEST_CASE("Implicit squeeze among many neighbours across ranks: bitwise one-rank
       for (int i = 0; i < 4; ++i)
         p.push_back(sphere(i + 4 * (j + 2 * k), {1.025 * a + i * step, 1.025 * a + j * step, 1.025 * a + k * step}, a, 1000,
                            {0.01 * uniform(), 0.01 * uniform(), 0.01 * uniform()}));
-  const double dt = 2e-5;
-  auto run = [&](MPI_Comm comm) {
-    Grid grid(comm, c.grid, c.bc);
-    DemSolver dem(grid, c, resolved(c, pc), p);
-    for (int k = 0; k < 200; ++k) dem.advance(k * dt, dt);
-    return gatherState(comm, dem.particles());
-  };
-  const std::vector<State> parallel = run(PETSC_COMM_WORLD);
-  const std::vector<State> serial = run(PETSC_COMM_SELF);
+  const std::vector<State> parallel = advanced(PETSC_COMM_WORLD, c, pc, p, 200, 2e-5);
+  const std::vector<State> serial = advanced(PETSC_COMM_SELF, c, pc, p, 200, 2e-5);
   REQUIRE(parallel.size() == 16);
   CHECK(bitwiseEqual(parallel, serial));
 }
