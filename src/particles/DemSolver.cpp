@@ -340,12 +340,18 @@ void DemSolver::substep(double dt)
   // steps per contact).
   // Fixed particles have zero inverse mass and inertia: their velocities stay as given (a prescribed
   // motion, at rest by default), with no branch.
+  auto kickV = [&](std::size_t i) {
+    return Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
+  };
+  auto kickW = [&](std::size_t i) {
+    return (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
+  };
   if (lub_.implicitSqueeze) {
     // Each half kick ends with the squeeze over the half step, implicitly (solveSqueeze).
     std::vector<Vec3> dv(s.nOwned), dw(s.nOwned);
     for (std::size_t i = 0; i < s.nOwned; ++i) {
-      dv[i] = Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
-      dw[i] = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
+      dv[i] = kickV(i);
+      dw[i] = kickW(i);
       s.v[i] += dv[i];
       s.w[i] += dw[i];
       if (Hydro) relax(i, half, s.v[i], s.w[i]);
@@ -360,17 +366,16 @@ void DemSolver::substep(double dt)
       if (Hydro) relax(i, half, s.v[i], s.w[i]);
     }
   } else {
-  for (std::size_t i = 0; i < s.nOwned; ++i) {
-    const Vec3 dv = Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
-    const Vec3 dw = (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
-    s.vHalf[i] = s.v[i] + dv;
-    s.wHalf[i] = s.w[i] + dw;
-    if (Hydro) relax(i, half, s.vHalf[i], s.wHalf[i]);
-    s.x[i] += dt * s.vHalf[i];  // a fixed particle moves with its prescribed, constant velocity
-    s.v[i] = s.vHalf[i] + dv;
-    s.w[i] = s.wHalf[i] + dw;
-    if (Hydro) relax(i, half, s.v[i], s.w[i]);
-  }
+    for (std::size_t i = 0; i < s.nOwned; ++i) {
+      const Vec3 dv = kickV(i), dw = kickW(i);
+      s.vHalf[i] = s.v[i] + dv;
+      s.wHalf[i] = s.w[i] + dw;
+      if (Hydro) relax(i, half, s.vHalf[i], s.wHalf[i]);
+      s.x[i] += dt * s.vHalf[i];  // a fixed particle moves with its prescribed, constant velocity
+      s.v[i] = s.vHalf[i] + dv;
+      s.w[i] = s.wHalf[i] + dw;
+      if (Hydro) relax(i, half, s.v[i], s.w[i]);
+    }
   }
   // A loop of its own: independent rotations pipeline better than inside the kick.
   if (pc_.orientation)
@@ -380,46 +385,52 @@ void DemSolver::substep(double dt)
   else
     exchange_->updateGhosts(s);
   computeForces(dt);
-  double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    s.v[i] = s.vHalf[i] + (Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i]);
-    s.w[i] = s.wHalf[i] + (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
+    s.v[i] = s.vHalf[i] + kickV(i);
+    s.w[i] = s.wHalf[i] + kickW(i);
     if (Hydro) relax(i, half, s.v[i], s.w[i]);
-    if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
   }
-  kineticEnergy_ = 0.5 * ke;
   if (lub_.implicitSqueeze) {
     solveSqueeze(half);
-    ke = 0;
-    for (std::size_t i = 0; i < s.nOwned; ++i)
-      if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
-    kineticEnergy_ = 0.5 * ke;
     if (stress_.on()) addSqueezeStress();
   }
+  double ke = 0;
+  for (std::size_t i = 0; i < s.nOwned; ++i)
+    if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
+  kineticEnergy_ = 0.5 * ke;
 }
 
 // -lub_integration implicit: the squeeze of every lubricated pair over a half kick dt, at its end,
 // (M + dt C) v = M v*, with C the squeeze resistances c n n^T of the pairs and walls. Solved by Jacobi
-// sweeps, each sphere's 3 x 3 block exactly (Cramer's rule) against its partners' last velocities,
-// with a ghost update between sweeps: the same sweeps on any rank count (bitwise), until the largest
-// change is below 1e-10 of the largest speed (docs/lubrication.md).
+// sweeps, each sphere's 3 x 3 block (I + dt/m sum c n n^T, inverted once) against its partners'
+// velocities of the previous sweep, with a ghost update between sweeps: the same sweeps on any rank
+// count (bitwise), until the largest change is below 1e-10 of the largest speed (docs/lubrication.md).
 void DemSolver::solveSqueeze(double dt)
 {
   ParticleStore& s = store_;
   const std::size_t n = s.nOwned;
-  std::vector<std::array<double, 9>> D(s.size());  // per sphere: sum of c n n^T (row-major)
-  for (const SqueezePair& p : squeezePairs_)
+  std::vector<std::array<double, 9>> A(n);  // per owned sphere: I + dt/m sum c n n^T, then its inverse
+  for (std::size_t i = 0; i < n; ++i) A[i] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  auto add = [&](std::size_t k, const SqueezePair& p) {
+    if (k >= n) return;
+    const double w = dt * s.invMass[k] * p.c;
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        D[p.i][3 * a + b] += p.c * p.n[a] * p.n[b];
-        if (p.wall < 0) D[p.j][3 * a + b] += p.c * p.n[a] * p.n[b];
-      }
+      for (int b = 0; b < 3; ++b) A[k][3 * a + b] += w * p.n[a] * p.n[b];
+  };
+  for (const SqueezePair& p : squeezePairs_) {
+    add(p.i, p);
+    if (p.wall < 0) add(p.j, p);
+  }
+  for (std::array<double, 9>& M : A) {  // the inverse by the adjugate
+    const std::array<double, 9> c = {M[4] * M[8] - M[5] * M[7], M[2] * M[7] - M[1] * M[8], M[1] * M[5] - M[2] * M[4],
+                                      M[5] * M[6] - M[3] * M[8], M[0] * M[8] - M[2] * M[6], M[2] * M[3] - M[0] * M[5],
+                                      M[3] * M[7] - M[4] * M[6], M[1] * M[6] - M[0] * M[7], M[0] * M[4] - M[1] * M[3]};
+    const double det = M[0] * c[0] + M[1] * c[3] + M[2] * c[6];
+    for (int k = 0; k < 9; ++k) M[k] = c[k] / det;
+  }
   const std::vector<Vec3> vStar(s.v.begin(), s.v.begin() + n);
   exchange_->updateGhosts(s);  // the first sweep sees every partner's v* (bitwise on any rank count)
   std::vector<Vec3> B(s.size()), next(n);
-  auto det = [](const double M[9]) {
-    return M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6]) + M[2] * (M[3] * M[7] - M[4] * M[6]);
-  };
   const MPI_Comm comm = grid_.comm();
   for (int sweep = 0;; ++sweep) {
     std::fill(B.begin(), B.end(), Vec3{});
@@ -430,16 +441,8 @@ void DemSolver::solveSqueeze(double dt)
     }
     double local[2] = {0, 0};  // largest change, largest speed
     for (std::size_t i = 0; i < n; ++i) {
-      const double w = dt * s.invMass[i];
-      double A[9];
-      Vec3 r = vStar[i] + w * B[i];
-      for (int k = 0; k < 9; ++k) A[k] = (k % 4 == 0) + w * D[i][k];
-      const double d = det(A);
-      for (int col = 0; col < 3; ++col) {
-        double M[9];
-        for (int k = 0; k < 9; ++k) M[k] = k % 3 == col ? r[k / 3] : A[k];
-        next[i][col] = det(M) / d;
-      }
+      const Vec3 r = vStar[i] + (dt * s.invMass[i]) * B[i];
+      for (int a = 0; a < 3; ++a) next[i][a] = A[i][3 * a] * r.x + A[i][3 * a + 1] * r.y + A[i][3 * a + 2] * r.z;
       local[0] = std::max(local[0], norm(next[i] - s.v[i]));
       local[1] = std::max(local[1], norm(next[i]));
     }
