@@ -14,12 +14,15 @@ cases/shear_suspension.opts with changes.
       8, with half the roughness, and in a periodic cell of 12 d x 12 d instead of 8 d x 8 d. Table.
 Means over the second half of each run's strain.
 usage: rheology.py [sphere|dilute|fraction|sensitivity] [--strain S] [--reuse]"""
-import csv, os, subprocess, sys
+import os, subprocess, sys
 import numpy as np
 from importlib.machinery import SourceFileLoader
 from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
 
 sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "regression", "check_rheology_sphere.py")).load_module()
+# The correlations and the reading of rheology.csv: scripts/plot_rheology's.
+plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
+boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
 STUDIES = ("sphere", "dilute", "fraction", "sensitivity")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
@@ -27,17 +30,6 @@ reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
 CASE = os.path.join(root, "cases", "shear_suspension.opts")
 A, MU, GAMMA = sphere_check.A, sphere_check.MU, sphere_check.GAMMA
-PHI_M = 0.585
-
-
-def boyer(phi):
-    J = (PHI_M / phi - 1) ** 2
-    return 1 + 2.5 * phi / (1 - phi / PHI_M) + 0.32 / J + (0.7 - 0.32) / (J + 0.005)
-
-
-def krieger_dougherty(phi):
-    return (1 - phi / PHI_M) ** (-2.5 * PHI_M)
-
 
 def run(name, options):
     out = os.path.join(scratch, "vp_val_rheology_" + name)
@@ -46,13 +38,11 @@ def run(name, options):
               ["-output_dt", "0", "-monitor_every", "250", "-output_dir", out, "-output_overwrite"]
         print(" ".join(cmd), flush=True)
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    rows = list(csv.DictReader(open(os.path.join(out, "rheology.csv"))))
-    return out, {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    return out, plot.load(out)
 
 
 def second_half(d):
-    m = d["strain"] >= d["strain"][-1] / 2
-    return {k: v[m].mean() for k, v in d.items()}
+    return plot.means(d, None)
 
 
 def sphere():
