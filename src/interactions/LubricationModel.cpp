@@ -95,6 +95,14 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
     // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
     return {0.25 * dot(f.forceI, s.normal) * s.normal, {}, {}};
   }
+  if (p.inertia && s.isWall() && s.density > 0) {
+    // The liquid's inertia in the squeeze film, first order in Re (docs/lubrication.md): the pressure
+    // rho U^2 a (3/(10 h) + 27 h_0/(70 h^2)) of the film h = h_0 + r^2/(2a) has the force
+    // 2 pi rho U^2 a^2 ((3/10) ln(H/h_0) + const); below h_act the grid misses its logarithm.
+    const double U = dot(s.velocityI - s.velocityJ, s.normal);
+    const double h = std::max(s.gap, p.saturation * a);
+    f.forceI -= (0.6 * M_PI * s.density * a * a * U * U * std::log(hAct / h)) * s.normal;
+  }
   const double hShear = p.shearActivationGap(a);
   if (s.gap < hShear && p.saturation * a < hShear) {
     PairState shear = s;
@@ -121,6 +129,7 @@ double squeezeResistance(const LubricationParams& p, const PairState& state, dou
   PairState s = state;
   s.velocityI = s.normal;  // unit approach speed
   s.velocityJ = s.angularVelocityI = s.angularVelocityJ = Vec3{};
+  s.density = 0;  // the resistance of the viscous squeeze alone
   return std::fabs(dot(lubricationForce(p, s, contactGap).forceI, s.normal));
 }
 

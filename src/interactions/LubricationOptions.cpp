@@ -27,6 +27,10 @@ LubricationParams readLubricationOptions()
                                "Normal (squeeze) lubrication in the DEM sub-steps: explicit (stable below the smallest gap's "
                                "relaxation time m* / c), or implicit in each sphere's own velocity (stable at any sub-step; "
                                "docs/lubrication.md)") == 1;
+  p.inertia = o.flag("-lub_inertia", p.inertia,
+                     "Add the liquid's inertia in the gap to a sphere's squeeze at a no-slip wall: the O(Re) term "
+                     "(3/5) pi rho a^2 U^2 ln(h_act/h) of the lubrication flow, repulsive (Cox & Brenner 1967; "
+                     "docs/lubrication.md)");
   if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
@@ -48,6 +52,8 @@ LubricationParams readLubricationOptions()
   }
   if (p.implicitSqueeze && p.model == LubModel::None)
     failOption("-lub_integration", "implicit integrates the lubrication's squeeze: it needs -lub_model blcm or llcm");
+  if (p.inertia && p.model == LubModel::None)
+    failOption("-lub_inertia", "corrects the lubrication's squeeze: it needs -lub_model blcm or llcm");
   if (!(p.llcmRegion > 0 && std::isfinite(p.llcmRegion)))
     failOption("-lub_llcm_r0", "must be > 0", p.llcmRegion);
   return p;

@@ -29,7 +29,7 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc, const std::vector<ParticleRecord>& all,
                      bool restart)
-  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu),
+  : grid_(grid), pc_(pc), law_(makeLaw(c, pc)), lub_(pc.lubrication), mu_(c.fluid.mu), rho_(c.fluid.rho),
     gravity_(c.gravity), walls_(domainWalls(c)), hydro_(!c.fluid.off), drag_(pc.implicitDrag),
     handOff_(c.fluid.off ? ContactHydro::Keep : pc.contact.hydro,
              pc.contact.departureCells * std::min({grid.h(0), grid.h(1), grid.h(2)}), pc.contact.hydroHistory, c.fluid.rho,
@@ -268,6 +268,7 @@ void DemSolver::computeForces(double dt)
           st.velocityJ = wall.velocity;
           st.angularVelocityI = s.w[i];
           st.viscosity = mu_;
+          st.density = rho_;
           st.slipWall = wall.slip;
           const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, a) : lub_;
           PairForce l = lubricationForce(film, st, 2 * rough * a);

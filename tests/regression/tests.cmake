@@ -410,3 +410,5 @@ vp_bad_input(contact_critical_load 1 "option -contact_critical_load: must be >= 
              -contact_critical_load -1)
 vp_bad_input(lub_integration_without_model 1 "option -lub_integration: implicit integrates the lubrication's squeeze: it needs -lub_model blcm or llcm"
              -lub_integration implicit)
+vp_bad_input(lub_inertia_without_model 1 "option -lub_inertia: corrects the lubrication's squeeze: it needs -lub_model blcm or llcm"
+             -lub_inertia)

@@ -556,3 +556,90 @@ TEST_CASE("Saturated resistance: BLCM wall value minus its activation value", "[
   CHECK(lubricationResistance(p, wall, 0) == Approx(6 * M_PI * kMu * kA * (1 / 1e-3 - 1 / 0.1)).epsilon(1e-12));
   CHECK(lubricationResistance(p, wall, 4e-3 * kA) == Approx(6 * M_PI * kMu * kA * (1 / 4e-3 - 1 / 0.1)).epsilon(1e-9));
 }
+
+namespace {
+
+// The first-order inertia of the squeeze film at a wall, computed here from the flow itself: the
+// Poiseuille squeeze u0 = 3 U r z (h - z) / h^3 in the film h(r, t) = h0 - U t + r^2 / (2a) (t only
+// moves h0), w0 from continuity, the inertial acceleration I = du0/dt + u0 du0/dr + w0 du0/dz by
+// finite differences, and the pressure gradient that keeps the film's flux with it,
+// dp1/dr = -(6 rho / h^3) int I z (h - z) dz. Returns the force of p1 on the sphere, integral of
+// p1 2 pi r dr, between the films of minimum gaps h0 and h1 (the same outer edge, far out).
+double filmInertiaForceDifference(double rho, double U, double a, double h0, double h1)
+{
+  const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  auto force = [&](double hMin) {
+    auto h = [&](double r, double t) { return hMin - U * t + r * r / (2 * a); };
+    auto u0 = [&](double r, double z, double t) { const double g = h(r, t); return 3 * U * r * z * (g - z) / (g * g * g); };
+    auto ru0r = [&](double r, double z) {  // (1/r) d(r u0)/dr
+      const double e = 1e-6 * r;
+      return ((r + e) * u0(r + e, z, 0) - (r - e) * u0(r - e, z, 0)) / (2 * e * r);
+    };
+    // The force is 2 pi a int p1 dh (r dr = a dh), and with p1 = 0 at the edge h = H,
+    // int p1 dh = -int (h - hMin) dp1/dh dh.
+    const double H = 100 * a;
+    const int n = 600;
+    double sum = 0;
+    for (int k = 0; k < n; ++k) {  // midpoints in ln(h - hMin) from 1e-3 hMin up to H
+      const double lo = std::log(1e-3 * hMin), hi = std::log(H);
+      const double s = lo + (k + 0.5) * (hi - lo) / n, dh = std::exp(s), g = hMin + dh;
+      const double r = std::sqrt(2 * a * dh);
+      double p1r = 0;
+      for (int q = 0; q < 4; ++q) {
+        const double z = 0.5 * g * (1 + gx[q]);
+        const double et = 1e-6 * g / U, er = 1e-6 * r;
+        const double ut = (u0(r, z, et) - u0(r, z, -et)) / (2 * et);
+        const double ur = (u0(r + er, z, 0) - u0(r - er, z, 0)) / (2 * er);
+        const double uz = 3 * U * r * (g - 2 * z) / (g * g * g);
+        double w = 0;  // w0 = -int_0^z (1/r) d(r u0)/dr dz'
+        for (int m = 0; m < 4; ++m) w -= 0.5 * z * gw[m] * ru0r(r, 0.5 * z * (1 + gx[m]));
+        const double I = ut + u0(r, z, 0) * ur + w * uz;
+        p1r += 0.5 * g * gw[q] * I * z * (g - z);
+      }
+      p1r *= -6 * rho / (g * g * g);
+      const double dp1dh = p1r * a / r;
+      sum -= dh * dp1dh * dh * (hi - lo) / n;  // (h - hMin) dp1/dh dh, with dh = (h - hMin) d ln(h - hMin)
+    }
+    return 2 * M_PI * a * sum;
+  };
+  return force(h0) - force(h1);
+}
+
+} // namespace
+
+TEST_CASE("The gap's inertia at a wall (-lub_inertia) is the first-order inertia of the squeeze film", "[lub]")
+{
+  LubricationParams p = gapParams();
+  p.model = LubModel::Llcm;
+  PairState s;
+  s.normal = {0, 0, -1};
+  s.radiusI = kA;
+  s.radiusJ = kWallRadius;
+  s.viscosity = kMu;
+  s.density = 1200;
+  s.gap = 0.2 * p.activation * kA;
+  const double U = 0.7;
+  const double hAct = p.activationGap(kA);
+  for (double sign : {1.0, -1.0}) {  // approaching and leaving: the inertia repels both ways
+    s.velocityI = sign * U * s.normal;
+    const Vec3 viscous = lubricationForce(p, s, 0).forceI;
+    p.inertia = true;
+    const Vec3 inertial = lubricationForce(p, s, 0).forceI - viscous;
+    p.inertia = false;
+    const double expected = filmInertiaForceDifference(s.density, U, kA, s.gap, hAct);
+    CHECK(inertial.z == Approx(expected).epsilon(0.01));  // along +z: away from the wall below
+    CHECK(std::hypot(inertial.x, inertial.y) == 0);
+  }
+  // Pairs of spheres and the viscous resistance of the implicit squeeze are not changed.
+  p.inertia = true;
+  PairState pair = genericPair(0.2 * p.activation, 1);
+  pair.density = 1200;
+  PairState dry = pair;
+  dry.density = 0;
+  CHECK(norm(lubricationForce(p, pair, 0).forceI - lubricationForce(p, dry, 0).forceI) == 0);
+  s.density = 1200;
+  const double c = squeezeResistance(p, s, 0);
+  p.inertia = false;
+  CHECK(c == squeezeResistance(p, s, 0));
+}

@@ -61,6 +61,8 @@ TEST_CASE("Lubrication options: bad values name the option and the range", "[lub
   CHECK(errorOf({{"-lub_activation", "0.01"}, {"-lub_saturation", "0.02"}}) ==
         "option -lub_saturation: must be below -lub_activation (0.01), got 0.02");
   CHECK(errorOf({{"-lub_llcm_r0", "0"}}) == "option -lub_llcm_r0: must be > 0, got 0");
+  CHECK(errorOf({{"-lub_inertia", "true"}}) ==
+        "option -lub_inertia: corrects the lubrication's squeeze: it needs -lub_model blcm or llcm");
   CHECK(errorOf({{"-lub_shear_activation_cells", "-0.1"}}).rfind("option -lub_shear_activation_cells: must be >= 0", 0) == 0);
   CHECK(errorOf({{"-lub_activation", "0.05"}, {"-lub_shear_activation_cells", "0.05"}}) ==
         "option -lub_shear_activation_cells: give it with -lub_activation_cells, not -lub_activation, got 0.05");

@@ -17,6 +17,7 @@ struct PairState {
   Vec3 velocityI, velocityJ;   // translational velocities [m/s] (a wall may slide)
   Vec3 angularVelocityI, angularVelocityJ; // [1/s]; a wall's is ignored
   double viscosity = 0;        // mu [Pa s]
+  double density = 0;          // rho of the liquid [kg/m^3]: the gap's inertia (-lub_inertia); 0: none
   bool slipWall = false;       // the wall is free-slip (no shear stress on it)
 
   bool isWall() const { return std::isinf(radiusJ); }

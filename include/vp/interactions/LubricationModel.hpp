@@ -44,6 +44,9 @@ struct LubricationParams {
   // -lub_integration implicit: the squeeze (normal) part taken implicitly in the DEM sub-steps
   // (DemSolver), so that the sub-step is not bounded by the smallest gap's relaxation time.
   bool implicitSqueeze = false;
+  // -lub_inertia: the O(Re) squeeze of a sphere approaching or leaving a no-slip wall (the liquid's
+  // inertia in the gap; docs/lubrication.md), from the state's density.
+  bool inertia = false;
 
   // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
   // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a

@@ -113,6 +113,7 @@ private:
   ContactLaw law_;
   LubricationParams lub_;  // model none: no lubrication pairs
   double mu_ = 0;          // fluid viscosity seen by the lubrication kernels [Pa s]
+  double rho_ = 0;         // fluid density (the gap's inertia at a wall, -lub_inertia) [kg/m^3]
   double lubGap_ = 0;      // largest activation or departure gap [m]
   double lubStableSubstep_ = HUGE_VAL;  // sub-step bound of the saturated lubrication dashpot [s]
   bool lubWatch_ = false;               // the sub-step exceeds it: watch the pairs
