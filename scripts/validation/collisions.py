@@ -22,7 +22,9 @@
                force, and with it left out from the contact to a gap of d/16 (the departure's window
                at d/dx 16): what the history of the boundary layer takes from a rebound, and where it
                takes it
-usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|all] [--res N] [--reuse] [--fine]
+  inertia:     e at St 20 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
+               gap (-lub_inertia)
+usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -832,7 +834,22 @@ def pair_position_figure(by_gap):
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_pair_position.png"), dpi=120)
 
-STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada")
+# --- The liquid's inertia in the gap ----------------------------------------------------------------
+def inertia():
+    print("nominal St  impact St  impact Re  e/e_dry  e/e_dry with -lub_inertia  change")
+    for st in (20, 100):
+        plain = restitution_run(st, HYDRO, r=12)
+        inert = restitution_run(st, HYDRO, r=12, extra=["-lub_inertia"])
+        if plain is None or inert is None:
+            print(f"{st:10d}  no rebound read")
+            continue
+        re_a = RHO_F * plain[2] * D3 / 2 / study_mu(st)
+        print(f"{st:10d}  {plain[0]:9.1f}  {re_a:9.1f}  {plain[1] / E_DRY:7.3f}  {inert[1] / E_DRY:24.3f}  "
+              f"{(inert[1] - plain[1]) / E_DRY:+6.3f}", flush=True)
+
+
+STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada",
+           "inertia")
 
 if __name__ == "__main__":
     what = chosen_study(__doc__, STUDIES, valued=("--res",))

@@ -12,9 +12,13 @@ cases/shear_suspension.opts with changes.
       parts, N1 and N2. Table, docs/validation/rheology_phi.png.
   sensitivity [--strain S]: the shipped case (phi 0.4, friction 0.5) to strain S (3) at d/dx 6 and
       8, with half the roughness, and in a periodic cell of 12 d x 12 d instead of 8 d x 8 d. Table.
+  thickening [--strain S]: cases/shear_thickening.opts (bidisperse, the critical load model) at
+      phi 0.52, 0.54, 0.56 to strain S (4): eta_r against sigma / sigma* (sigma* = F_CL / (6 pi a^2),
+      a the small radius) from frictionless to always frictional, and the DEM's cost per strain unit
+      with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
-usage: rheology.py [sphere|dilute|fraction|sensitivity] [--strain S] [--reuse]"""
-import os, subprocess, sys
+usage: rheology.py [sphere|dilute|fraction|sensitivity|thickening] [--strain S] [--reuse]"""
+import csv, json, os, subprocess, sys
 import numpy as np
 from importlib.machinery import SourceFileLoader
 from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
@@ -24,17 +28,17 @@ sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "reg
 plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
 boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
-STUDIES = ("sphere", "dilute", "fraction", "sensitivity")
+STUDIES = ("sphere", "dilute", "fraction", "sensitivity", "thickening")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
 reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
 CASE = os.path.join(root, "cases", "shear_suspension.opts")
 A, MU, GAMMA = sphere_check.A, sphere_check.MU, sphere_check.GAMMA
 
-def run(name, options):
+def run(name, options, case=CASE):
     out = os.path.join(scratch, "vp_val_rheology_" + name)
     if not (reuse and os.path.exists(os.path.join(out, "rheology.csv"))):
-        cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", CASE] + options + \
+        cmd = ["mpirun", "-n", ranks, vpsolve, "-options_file", case] + options + \
               ["-output_dt", "0", "-monitor_every", "250", "-output_dir", out, "-output_overwrite"]
         print(" ".join(cmd), flush=True)
         subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
@@ -72,6 +76,15 @@ def sphere():
     ax[1].legend()
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "rheology_sphere.png"), dpi=110)
+
+
+def block_error(d, block=0.25):
+    """Standard error of eta_r's mean over the second half of the strain, from means over blocks of
+    `block` strain units (successive blocks taken as independent)."""
+    s, e = d["strain"], d["eta_r"]
+    starts = np.arange(s[-1] / 2, s[-1] - 1e-9, block)
+    means = [e[(s > a) & (s <= a + block)].mean() for a in starts]
+    return np.std(means, ddof=1) / np.sqrt(len(means))
 
 
 def packed(phi, friction, strain_end, name, extra=(), width=0.008):
@@ -129,6 +142,69 @@ def sensitivity():
         m = second_half(d)
         print(f"{label:22s} {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['eta_hydro']:5.2f}  {m['eta_lub']:4.2f}  {m['eta_contact']:7.2f}  "
               f"{m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  {m['eta_r'] / boyer(m['phi']):6.2f}", flush=True)
+
+
+THICKENING = os.path.join(root, "cases", "shear_thickening.opts")
+A_SMALL = 5e-4                   # the small spheres' radius in cases/shear_thickening.opts
+F_CL = (1e-3, 3e-4, 1e-4, 3e-5, 1e-5)  # N: sigma / sigma* from about 0.1 to 50
+
+
+def thickening():
+    strain_end = strain or 4.0
+    sigma_unit = MU * GAMMA * 6 * np.pi * A_SMALL**2  # mu gamma / sigma* per unit F_CL (N)
+    print("phi    F_CL (N)  sigma/sigma*  eta_r (+- block error)  bulk   hydro  lub   contact  n1     n2")
+    curves = {}
+    for phi in (0.52, 0.54, 0.56):
+        # Plateaus: frictionless (sigma* infinite) and friction on every contact (sigma* = 0).
+        loads = [None] + (list(F_CL) if phi == 0.54 else []) + [0.0]
+        for load in loads:
+            friction = ["-contact_friction", "0"] if load is None else ["-contact_critical_load", str(load)]
+            name = f"thick_{phi}_" + ("none" if load is None else f"{load:g}")
+            _, d = run(name, [f"-particles_packed", f"0,0,0,0.008,0.008,0.016,{phi},{A_SMALL},1",
+                              "-time_final", str(strain_end / GAMMA)] + friction, THICKENING)
+            m = second_half(d)
+            ratio = 0.0 if load is None else (np.inf if load == 0 else m["eta_r"] * sigma_unit / load)
+            curves.setdefault(phi, []).append((ratio, m, block_error(d)))
+            print(f"{m['phi']:.3f}  {'-' if load is None else f'{load:8.0e}':>8s}  {ratio:12.3g}  {m['eta_r']:5.1f} +- "
+                  f"{block_error(d):4.1f}          "
+                  f"{m['eta_r_bulk']:5.1f}  {m['eta_hydro']:5.2f}  {m['eta_lub']:4.2f}  {m['eta_contact']:7.1f}  {m['n1']:5.1f}  "
+                  f"{m['n2']:5.1f}", flush=True)
+    # The DEM's cost per strain unit: explicit and implicit squeeze at the case's sub-step (phi 0.54,
+    # sigma* from 1e-4 N), a strain unit each.
+    print("integration  DEM s per strain unit  whole step s per strain unit  eta_r")
+    for integration in ("explicit", "implicit"):
+        out, d = run(f"thick_cost_{integration}", ["-particles_packed", f"0,0,0,0.008,0.008,0.016,0.54,{A_SMALL},1",
+                                                    "-contact_critical_load", "1e-4", "-lub_integration", integration,
+                                                    "-time_final", str(1 / GAMMA)], THICKENING)
+        record = json.load(open(os.path.join(out, "run.json")))
+        print(f"{integration:11s}  {record['stage_seconds']['DEM']:21.1f}  {record['wall_seconds']:28.1f}  "
+              f"{second_half(d)['eta_r']:5.1f}", flush=True)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for k, (phi, pts) in enumerate(sorted(curves.items())):
+        c = f"C{k}"
+        finite = sorted((r, m["eta_r"], err) for r, m, err in pts if 0 < r < np.inf)
+        if finite:
+            x, y, err = zip(*finite)
+            ax.errorbar(x, y, yerr=err, fmt="o-", color=c, capsize=2, label=f"phi {phi}")
+        for r, m, _ in pts:
+            if r == 0 or r == np.inf:
+                ax.axhline(m["eta_r"], color=c, ls="--" if r == 0 else ":", lw=1)
+        ax.plot([], [], color=c, ls="--", lw=1, label=f"phi {phi}: frictionless (--), always frictional (..)")
+    peer = os.path.join(root, "benchmarks", "lf_dem", "results_thickening.csv")  # benchmarks/lf_dem/README.md
+    if os.path.exists(peer):
+        rows = [r for r in csv.DictReader(open(peer)) if float(r["friction"]) == 0.5]
+        for k, phi in enumerate(sorted(curves)):
+            pts = sorted((float(r["sigma_over_sigma_star"]), float(r["eta_r"])) for r in rows if abs(float(r["phi"]) - phi) < 1e-6)
+            if pts:
+                ax.plot(*zip(*pts), "s", mfc="none", color=f"C{k}", label=f"LF_DEM, phi {phi}")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("sigma / sigma*  (sigma* = F_CL / (6 pi a^2))")
+    ax.set_ylabel("relative viscosity (walls)")
+    ax.set_title(f"critical load model, friction 0.5, bidisperse 1:1.4, strain {strain_end:g}")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "rheology_thickening.png"), dpi=110)
 
 
 for study in STUDIES:

@@ -393,6 +393,11 @@ set_tests_properties(rheology_sphere PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROC
 add_test(NAME case_shear_suspension COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_shear_case.py $<TARGET_FILE:vpsolve>
          ${VP_CASES}/shear_suspension.opts ${CMAKE_CURRENT_BINARY_DIR}/case_shear_suspension)
 set_tests_properties(case_shear_suspension PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow TIMEOUT 600)
+# The shipped thickening case (the critical load model) to a strain of 0.6, frictionless, as shipped and
+# always frictional: the relative viscosity rises in that order, the last at least twice the first.
+add_test(NAME case_shear_thickening COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_thickening_case.py $<TARGET_FILE:vpsolve>
+         ${VP_CASES}/shear_thickening.opts ${CMAKE_CURRENT_BINARY_DIR}/case_shear_thickening)
+set_tests_properties(case_shear_thickening PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow TIMEOUT 600)
 vp_bad_input(rheology_no_shear 1 "option -bc_zhi_velocity: walls that do not shear"
              -options_file ${VP_CASES}/shear_suspension.opts -bc_zhi_velocity -0.08,0,0)
 vp_bad_input(rheology_fixed_walls 1 "option -bc_zlo: the shear cell's walls move"
