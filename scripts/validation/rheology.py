@@ -78,6 +78,15 @@ def sphere():
     fig.savefig(os.path.join(outdir, "rheology_sphere.png"), dpi=110)
 
 
+def save(fig, ax, xlabel, ylabel, title, name, legend_size=8):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=legend_size)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, name), dpi=110)
+
+
 def block_error(d, block=0.25):
     """Standard error of eta_r's mean over the second half of the strain, from means over blocks of
     `block` strain units (successive blocks taken as independent)."""
@@ -123,12 +132,7 @@ def fraction():
         ax.plot(m["phi"], m["eta_r_bulk"], "x", color=c)
     ax.plot([], [], "o", color="C0", label="friction 0.5 (o wall, x bulk)")
     ax.plot([], [], "o", color="C3", label="frictionless")
-    ax.set_xlabel("solid fraction phi")
-    ax.set_ylabel("relative viscosity")
-    ax.set_title(f"d/dx 6, gap 16 d, strain {strain_end:g}")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "rheology_phi.png"), dpi=110)
+    save(fig, ax, "solid fraction phi", "relative viscosity", f"d/dx 6, gap 16 d, strain {strain_end:g}", "rheology_phi.png")
 
 
 def sensitivity():
@@ -199,12 +203,8 @@ def thickening():
                 ax.plot(*zip(*pts), "s", mfc="none", color=f"C{k}", label=f"LF_DEM, phi {phi}")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("sigma / sigma*  (sigma* = F_CL / (6 pi a^2))")
-    ax.set_ylabel("relative viscosity (walls)")
-    ax.set_title(f"critical load model, friction 0.5, bidisperse 1:1.4, strain {strain_end:g}")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "rheology_thickening.png"), dpi=110)
+    save(fig, ax, "sigma / sigma*  (sigma* = F_CL / (6 pi a^2))", "relative viscosity (walls)",
+         f"critical load model, friction 0.5, bidisperse 1:1.4, strain {strain_end:g}", "rheology_thickening.png", 7)
 
 
 for study in STUDIES:
