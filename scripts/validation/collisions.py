@@ -22,7 +22,7 @@
                force, and with it left out from the contact to a gap of d/16 (the departure's window
                at d/dx 16): what the history of the boundary layer takes from a rebound, and where it
                takes it
-  inertia:     e at St 20 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
+  inertia:     e at St 20, 30, 60 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
                gap (-lub_inertia)
 usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
@@ -837,7 +837,7 @@ def pair_position_figure(by_gap):
 # --- The liquid's inertia in the gap ----------------------------------------------------------------
 def inertia():
     print("nominal St  impact St  impact Re  e/e_dry  e/e_dry with -lub_inertia  change")
-    for st in (20, 100):
+    for st in (20, 30, 60, 100):
         plain = restitution_run(st, HYDRO, r=12)
         inert = restitution_run(st, HYDRO, r=12, extra=["-lub_inertia"])
         if plain is None or inert is None:
