@@ -567,8 +567,8 @@ namespace {
 // p1 2 pi r dr, between the films of minimum gaps h0 and h1 (the same outer edge, far out).
 double filmInertiaForceDifference(double rho, double U, double a, double h0, double h1)
 {
-  const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-  const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  std::vector<double> gx, gw;  // exact across the film: I z (h - z) is a polynomial of degree 6 in z
+  gaussLegendre(4, gx, gw);
   auto force = [&](double hMin) {
     auto h = [&](double r, double t) { return hMin - U * t + r * r / (2 * a); };
     auto u0 = [&](double r, double z, double t) { const double g = h(r, t); return 3 * U * r * z * (g - z) / (g * g * g); };
