@@ -13,7 +13,7 @@ void hydroForces(ParticleStore& s, ParticleExchange& exchange, std::vector<doubl
     const Vec3 penForce{sum[0], sum[1], sum[2]}, penTorque{sum[3], sum[4], sum[5]};
     const Vec3 momentum{sum[6], sum[7], sum[8]}, moment{sum[9], sum[10], sum[11]};
     if (dt > 0) {
-      const double volume = 4.0 / 3.0 * M_PI * std::pow(s.radius[i], 3);
+      const double volume = s.shape(i).volume();
       s.fhyd[i] = penForce + (momentum - s.fluidMomentum[i]) / dt - (rho * volume) * gravity;
       s.thyd[i] = penTorque + (moment - s.fluidAngularMomentum[i]) / dt;
     }

@@ -88,6 +88,21 @@ private:
   PetscInt nx_, ny_, i0_, j0_, k0_, rowStart_, j_ = 0, k_ = 0;  // rowStart_: no row yet
 };
 
+// Depth of the point r (from the centre, space frame) inside a non-sphere's surface, > 0 inside;
+// exact within eps of the surface, and beyond it only its sign and that it exceeds eps matter. The
+// point lies on the surface scaled by 1 + G (G the level below): its distance from the surface is
+// between |G| times the smallest and the largest semi-axis, which settles most points without the
+// iterative distance.
+double depth(const Shape& shape, const Quaternion& q, const Vec3& r, double eps)
+{
+  const Vec3 b = toBody(q, r);
+  const double a = shape.a, c = shape.c();
+  const double G = std::sqrt((b.x * b.x + b.y * b.y) / (a * a) + b.z * b.z / (c * c)) - 1;
+  const double bound = std::fabs(G) * shape.smallestSemiAxis();
+  if (bound >= eps) return G > 0 ? -bound : bound;
+  return -shape.distance(b);
+}
+
 } // namespace
 
 void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
@@ -117,7 +132,9 @@ void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
   std::sort(keys.begin(), keys.end());
   for (const auto& [key, p] : keys) {
     const Vec3 X = s.x[p];
-    const double a = s.radius[p], reach = a + eps, reach2 = reach * reach;
+    const Shape shape = s.shape(p);
+    const bool round = shape.sphere();
+    const double a = shape.boundingRadius(), reach = a + eps, reach2 = reach * reach;
     // Owned faces of component c within reach of the centre, box[c] (face c sits at index i along
     // c); the three components are visited together, cell by cell, as they lie in memory.
     PetscInt lo[3][3], hi[3][3], ulo[3], uhi[3];
@@ -150,7 +167,7 @@ void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
             if (!row[c] || i < lo[c][0] || i >= hi[c][0]) continue;
             const Vec3 r = Vec3{coord(c, 0, i), coord(c, 1, j), coord(c, 2, k)} - X;
             if (r[0] * r[0] + dyz2[c] > reach2) continue;
-            const double phi = a - norm(r);  // > 0 inside
+            const double phi = round ? a - norm(r) : depth(shape, s.q[p], r, eps);  // > 0 inside
             double value;
             if (eps == 0) value = phi > 0 ? 1 : 0;
             else if (phi <= -eps) value = 0;

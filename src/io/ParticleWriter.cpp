@@ -31,8 +31,8 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
   H5Pclose(fapl);
   if (file < 0) throw std::runtime_error("cannot create " + path);
   const hsize_t T_ = total, o = offset, m = n;
-  // The kSnapshot fields of ParticleFields.hpp as they are, then the total force (contact +
-  // hydrodynamic), a derived quantity.
+  // The kSnapshot fields of ParticleFields.hpp as they are, then two derived quantities: the total
+  // force (contact + hydrodynamic) and the symmetry axis.
   forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo& info, auto sync) {
     if constexpr ((decltype(sync)::value & kSnapshot) != 0) {
       using T = typename std::remove_reference_t<decltype(s.*field)>::value_type;
@@ -51,6 +51,10 @@ void ParticleWriter::write(const ParticleStore& s, int step, double time)
   double* p = force.data();
   for (long i = 0; i < n; ++i) writeDoubles(s.force[i] + s.fhyd[i], p);
   h5::writeRows(file, "force", H5T_NATIVE_DOUBLE, force.data(), T_, o, m, 3);
+  // The symmetry axis (body z) in space: a ParaView glyph oriented by it shows a spheroid's attitude.
+  p = force.data();
+  for (long i = 0; i < n; ++i) writeDoubles(toSpace(s.q[i], Vec3{0, 0, 1}), p);
+  h5::writeRows(file, "axis", H5T_NATIVE_DOUBLE, force.data(), T_, o, m, 3);
   h5::writeAttribute(file, "time", &time, 1);
   h5::writeAttribute(file, "vpsolve_run", runRecord());
   H5Fclose(file);
@@ -122,6 +126,7 @@ void ParticleWriter::writeXdmf() const
         }
       });
       attribute("force", "Vector", 3);
+      attribute("axis", "Vector", 3);
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";

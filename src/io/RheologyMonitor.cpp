@@ -89,7 +89,7 @@ RheologyMonitor::RheologyMonitor(const Grid& grid, const Config& c, const Rheolo
   pen.enableStresslets(grid.cellCentre(2, kA_), grid.cellCentre(2, kB_));
   dem.pairStress().enable(grid.cellCentre(2, kA_), grid.cellCentre(2, kB_));
   double volume = 0;
-  for (std::size_t i = 0; i < s.nOwned; ++i) volume += 4.0 / 3.0 * M_PI * std::pow(s.radius[i], 3);
+  for (std::size_t i = 0; i < s.nOwned; ++i) volume += s.shape(i).volume();
   MPI_Allreduce(MPI_IN_PLACE, &volume, 1, MPI_DOUBLE, MPI_SUM, comm);
   phi_ = volume / ((grid.hi(0) - grid.lo(0)) * (grid.hi(1) - grid.lo(1)) * (grid.hi(2) - grid.lo(2)));
   csv_ = std::make_unique<CsvWriter>(comm, dir + "/rheology.csv",

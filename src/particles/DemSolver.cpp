@@ -54,8 +54,12 @@ DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc
 
 void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
 {
-  for (const ParticleRecord& r : all) rmax_ = std::max(rmax_, r.radius);
+  for (const ParticleRecord& r : all) {
+    rmax_ = std::max(rmax_, Shape{r.radius, r.aspect.value}.boundingRadius());
+    shaped_ = shaped_ || r.aspect.value != 1;
+  }
   if (rmax_ == 0) rmax_ = pc_.radius;
+  if (shaped_) checkShapes(all);
   skin_ = pc_.skin * 2 * rmax_;
   // Lubrication acts below the activation gap; it holds constant below the roughness gap, where
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
@@ -78,6 +82,23 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // Initial forces (zero step: springs keep their state). A restart has those of the last
   // sub-step, computed from the predicted velocities: recomputing them would change the run.
   if (!restart) computeForces(0);
+}
+
+// What the non-spheres can do so far (docs/shapes.md): one at a time (no spheroid pair contact
+// yet), without lubrication (its geometry-free correction is not wired in), resolved by the grid.
+void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
+{
+  const std::string option = pc_.spheroid ? "-particle_shape" : "-particles_file";
+  if (all.size() > 1)
+    failOption(option, "a spheroid runs alone for now (contacts between spheroids are not implemented); got " +
+                           std::to_string(all.size()) + " particles");
+  if (lub_.model != LubModel::None) failOption("-lub_model", "a spheroid's lubrication is not implemented yet: use -lub_model none");
+  const double h = std::max({grid_.h(0), grid_.h(1), grid_.h(2)});
+  const Shape g{all[0].radius, all[0].aspect.value};
+  if (hydro_ && 2 * g.smallestSemiAxis() < 2 * h)
+    failOption(pc_.spheroid ? "-particle_aspect" : "-particles_file",
+               "the spheroid's thickness 2 min(a, c) = " + formatNumber(2 * g.smallestSemiAxis()) + " m spans less than two cells (" +
+                   formatNumber(2 * h) + " m): the mask cannot resolve it");
 }
 
 void DemSolver::saveState(StateWriter& w)
@@ -221,6 +242,12 @@ void DemSolver::computeForces(double dt)
   ContactCoefficients wallCoef;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
+    if (!s.sphere(i)) {
+      wallContacts += spheroidWalls(i, F, T, dt);
+      s.force[i] = F + s.mass[i] * gravity_;
+      s.torque[i] = T;
+      continue;
+    }
     const double a = s.radius[i], reach = a * (1 + 2 * rough);
     const double lubReach = lubricated ? a + lub_.activationGap(a) : 0;
     const bool candidate = s.flags[i] & kDeparting;
@@ -294,6 +321,49 @@ void DemSolver::computeForces(double dt)
   wallContacts_ = wallContacts;
 }
 
+// The walls of a non-sphere (particles/Shape.hpp): the contact at its surface point nearest the wall,
+// the point whose outward normal is the wall's inward one reversed, at the gap of spheres
+// (2 x roughness x the equatorial radius). The normal force acts there, so a tilted spheroid feels
+// its torque. Without rolling resistance (a non-sphere resists rolling by its shape) and without
+// lubrication (ParticleConfig::validate).
+int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
+{
+  ParticleStore& s = store_;
+  const Shape g = s.shape(i);
+  const double reachBeyond = 2 * law_.roughness() * g.a;
+  int touching = 0;
+  bool departing = false;
+  std::uint8_t touch = 0;
+  if (s.wallTouch[i] || nearWall(s.x[i], g.boundingRadius() + std::max(reachBeyond, handOff_.departureGap()))) {
+    for (int f : activeWalls_) {
+      const Wall& wall = walls_[f];
+      const Vec3 n = wall.normal();
+      const Vec3 towardWall = toBody(s.q[i], -n);
+      const double gap = wall.distance(s.x[i]) - g.extent(towardWall), overlap = reachBeyond - gap;
+      Vec3& spring = s.wallSpring[i][f];
+      if (overlap <= 0 || s.fixed(i)) {
+        spring = Vec3{};
+      } else {
+        touch |= 1 << f;
+        const Vec3 lever = toSpace(s.q[i], g.pointWithNormal(towardWall));
+        const Vec3 vc = s.v[i] + cross(s.w[i], lever) - wall.velocity;
+        const ContactCoefficients coef = law_.coefficients(s.mass[i], true);
+        const ContactForce c = contactForce(n, overlap, vc, coef, spring, dt);
+        noteOverlap(overlap / (2 * g.smallestSemiAxis()), s.id[i], -1 - f);
+        F += c.normal + c.tangential;
+        if (stress_.on()) stress_.addWall(PairStress::Contact, f, c.normal + c.tangential);
+        T += cross(lever, c.normal + c.tangential);
+        ++touching;
+        handOff_.touchWall(s, i, overlap, coef.kn);
+      }
+      departing = handOff_.wallLeaving(s, i, wall.velocity, n, gap) || departing;
+    }
+  }
+  s.wallTouch[i] = touch;
+  handOff_.endWalls(s, i, departing);
+  return touching;
+}
+
 // A still liquid acting on each particle alone (-dem_drag_viscosity): a sedimentation without
 // hydrodynamic interactions, for preparing packings at a low Stokes number. The velocities are the
 // predicted ones the other forces see; explicit, stable while dt < m / (3 pi mu d), far above
@@ -345,7 +415,8 @@ void DemSolver::substep(double dt)
     return Hydro ? handOff_.halfKick(s, i, half, s.force[i] + handOff_.resolvedForce(s, i)) : (half * s.invMass[i]) * s.force[i];
   };
   auto kickW = [&](std::size_t i) {
-    return (half * s.invInertia[i]) * (Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i]);
+    const Vec3 T = Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i];
+    return s.sphere(i) ? (half * s.invInertia[i]) * T : s.spinChange(i, half * T);
   };
   if (lub_.implicitSqueeze) {
     // Each half kick ends with the squeeze over the half step, implicitly (solveSqueeze).
@@ -378,9 +449,20 @@ void DemSolver::substep(double dt)
       if (Hydro) relax(i, half, s.v[i], s.w[i]);
     }
   }
-  // A loop of its own: independent rotations pipeline better than inside the kick.
-  if (pc_.orientation)
-    for (std::size_t i = 0; i < s.nOwned; ++i) s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
+  // A loop of its own: independent rotations pipeline better than inside the kick. A non-sphere
+  // turns at constant angular momentum between the kicks (Euler's equations, the gyroscopic term
+  // included), at the spin of the half-turned body (the midpoint rule: second order).
+  if (pc_.orientation || shaped_)
+    for (std::size_t i = 0; i < s.nOwned; ++i) {
+      if (s.sphere(i)) {
+        s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
+        continue;
+      }
+      const Quaternion before = s.q[i], mid = rotated(before, s.wHalf[i], half);
+      s.q[i] = rotated(before, s.carriedSpin(i, before, mid, s.wHalf[i]), dt);
+      s.wHalf[i] = s.carriedSpin(i, before, s.q[i], s.wHalf[i]);
+      s.w[i] = s.carriedSpin(i, before, s.q[i], s.w[i]);
+    }
   if (needRebuild())
     rebuild();
   else
@@ -397,7 +479,8 @@ void DemSolver::substep(double dt)
   }
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i)
-    if (!s.fixed(i)) ke += s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i]));
+    if (!s.fixed(i))
+      ke += s.sphere(i) ? s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i])) : twiceKinetic(i);
   kineticEnergy_ = 0.5 * ke;
 }
 
@@ -540,11 +623,19 @@ void DemSolver::checkLubricationSeen(double dtp)
 // A steady motion (v = vSeen) is unchanged; without it the held force overshoots once the fluid
 // step exceeds the particle's viscous relaxation time (spin reverses every step and grows near
 // walls and neighbours; docs/coupling.md).
+double DemSolver::twiceKinetic(std::size_t i) const
+{
+  const ParticleStore& s = store_;
+  const Vec3 b = toBody(s.q[i], s.w[i]), k = s.invInertiaBody[i];
+  return s.mass[i] * dot(s.v[i], s.v[i]) + b.x * b.x / k.x + b.y * b.y / k.y + b.z * b.z / k.z;
+}
+
 void DemSolver::relax(std::size_t i, double half, Vec3& v, Vec3& w) const
 {
   const ParticleStore& s = store_;
   if (drag_ == 0 || handOff_.resolvedOff(s, i)) return;
-  const double a = s.radius[i];
+  // A non-sphere: the Stokes resistance of its equal-volume sphere, on its most mobile axis.
+  const double a = s.sphere(i) ? s.radius[i] : s.shape(i).equalVolumeRadius();
   const double cv = half * s.invMass[i] * drag_ * 6 * M_PI * mu_ * a;
   const double cw = half * s.invInertia[i] * drag_ * 8 * M_PI * mu_ * a * a * a;
   v = (1 / (1 + cv)) * (v + cv * s.vSeen[i]);
@@ -576,7 +667,7 @@ DemDiagnostics DemSolver::diagnostics() const
     ke = 0;
     const ParticleStore& s = store_;
     for (std::size_t i = 0; i < s.nOwned; ++i)
-      if (!s.fixed(i)) ke += 0.5 * (s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i]);
+      if (!s.fixed(i)) ke += 0.5 * (s.sphere(i) ? s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i] : twiceKinetic(i));
   }
   double local[4] = {ke, double(store_.nOwned), double(contacts_), double(wallContacts_)}, global[4];
   MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_SUM, grid_.comm());

@@ -39,6 +39,24 @@ void checkValues(const double* v, const std::string& where)
     failOption("-particles_file", where + ": id must be an integer >= 0");
 }
 
+// The optional shape columns: aspect (1, a sphere, when absent) and the orientation qw,qx,qy,qz
+// (normalised; the body z axis is a spheroid's symmetry axis).
+const char* const kShapeColumns[5] = {"aspect", "qw", "qx", "qy", "qz"};
+
+void setShape(ParticleRecord& r, const double* v, const bool* given, const std::string& where)
+{
+  if (given[0]) {
+    if (!(v[0] > 0) || !std::isfinite(v[0])) failOption("-particles_file", where + ": aspect must be > 0, got " + formatNumber(v[0]));
+    r.aspect.value = v[0];
+  }
+  if (given[1] || given[2] || given[3] || given[4]) {
+    if (!(given[1] && given[2] && given[3] && given[4])) failOption("-particles_file", where + ": give all four of qw,qx,qy,qz");
+    const double n = std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
+    if (!(n > 0) || !std::isfinite(n)) failOption("-particles_file", where + ": orientation qw,qx,qy,qz must be a non-zero quaternion");
+    r.q = Quaternion{v[1] / n, v[2] / n, v[3] / n, v[4] / n};
+  }
+}
+
 // Uniform double in [0, 1) from 53 random bits (same sequence on every platform).
 double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
@@ -71,6 +89,16 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
   // Optional: fixed = 1 holds that particle (a rough wall of spheres), 0 leaves it free.
   const auto fixedIt = std::find(header.begin(), header.end(), "fixed");
   const long fixedColumn = fixedIt == header.end() ? -1 : fixedIt - header.begin();
+  // Optional: shape = sphere or spheroid (a check of the aspect column), and the shape columns.
+  const auto shapeIt = std::find(header.begin(), header.end(), "shape");
+  const long shapeColumn = shapeIt == header.end() ? -1 : shapeIt - header.begin();
+  long shapeCol[5];
+  bool given[5];
+  for (int c = 0; c < 5; ++c) {
+    const auto it = std::find(header.begin(), header.end(), kShapeColumns[c]);
+    shapeCol[c] = it == header.end() ? -1 : it - header.begin();
+    given[c] = shapeCol[c] >= 0;
+  }
   std::vector<ParticleRecord> out;
   std::vector<std::string> cells;
   long lineNo = 1;
@@ -101,6 +129,21 @@ std::vector<ParticleRecord> readParticleCsv(const std::string& path)
       if (t != "0" && t != "1") failOption("-particles_file", where + ": column fixed must be 0 or 1, got '" + t + "'");
       if (t == "1") out.back().flags |= kFixed;
     }
+    double sv[5] = {1, 1, 0, 0, 0};
+    for (int c = 0; c < 5; ++c)
+      if (given[c]) {
+        char* end = nullptr;
+        sv[c] = std::strtod(cells[shapeCol[c]].c_str(), &end);
+        if (end == cells[shapeCol[c]].c_str())
+          failOption("-particles_file", where + ": column " + kShapeColumns[c] + " value '" + cells[shapeCol[c]] + "' is not a number");
+      }
+    setShape(out.back(), sv, given, where);
+    if (shapeColumn >= 0) {
+      std::string t = cells[shapeColumn];
+      t.erase(std::remove_if(t.begin(), t.end(), [](char ch) { return std::isspace(static_cast<unsigned char>(ch)); }), t.end());
+      if (t != "sphere" && t != "spheroid") failOption("-particles_file", where + ": column shape must be sphere or spheroid, got '" + t + "'");
+      if (t == "sphere" && out.back().aspect.value != 1) failOption("-particles_file", where + ": a sphere has aspect 1");
+    }
   }
   return out;
 }
@@ -122,6 +165,15 @@ std::vector<ParticleRecord> readParticleHdf5(const std::string& path)
     else if (cols != 1 || (c > 0 && rows != col[0].size()))
       error = "'" + path + "' dataset " + kParticleColumns[c] + " must be 1-D with one value per particle";
   }
+  std::vector<double> shapeCol[5];
+  bool given[5] = {};
+  for (int c = 0; c < 5 && error.empty(); ++c) {
+    hsize_t rows = 0, cols = 0;
+    const std::string e = h5::readTable(file, kShapeColumns[c], shapeCol[c], rows, cols);
+    given[c] = e.empty();
+    if (given[c] && (cols != 1 || rows != col[0].size()))
+      error = "'" + path + "' dataset " + kShapeColumns[c] + " must be 1-D with one value per particle";
+  }
   if (file >= 0) H5Fclose(file);
   if (!error.empty()) failOption("-particles_file", error);
   std::vector<ParticleRecord> out;
@@ -130,6 +182,10 @@ std::vector<ParticleRecord> readParticleHdf5(const std::string& path)
     for (int c = 0; c < 12; ++c) v[c] = col[c][i];
     checkValues(v, "'" + path + "' row " + std::to_string(i));
     out.push_back(fromColumns(v));
+    double sv[5] = {1, 1, 0, 0, 0};
+    for (int c = 0; c < 5; ++c)
+      if (given[c]) sv[c] = shapeCol[c][i];
+    setShape(out.back(), sv, given, "'" + path + "' row " + std::to_string(i));
   }
   return out;
 }
@@ -212,11 +268,14 @@ void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, do
     if (!(r.density > 0)) failOption(option, who + ": density must be > 0, got " + formatNumber(r.density));
     for (int d = 0; d < 3; ++d) {
       const double lo = c.grid.lo[d], hi = c.grid.hi[d];
-      // On a wall axis the sphere must fit (up to the overlap tolerance); on a periodic one the centre.
-      const double margin = c.bc.periodic(d) ? 0 : r.radius * (1 - 2 * maxOverlap);
+      // On a wall axis the particle must fit (up to the overlap tolerance); on a periodic one the centre.
+      Vec3 e;
+      e[d] = 1;
+      const double half = r.aspect.value == 1 ? r.radius : Shape{r.radius, r.aspect.value}.extent(toBody(r.q, e));
+      const double margin = c.bc.periodic(d) ? 0 : half - 2 * maxOverlap * r.radius;
       if (!(r.x[d] >= lo + margin && r.x[d] <= hi - margin) || (c.bc.periodic(d) && r.x[d] == hi))
         failOption(option, who + " at " + axis[d] + " = " + formatNumber(r.x[d]) + " lies outside the domain [" + formatNumber(lo) + ", " +
-                         formatNumber(hi) + "] (sphere of radius " + formatNumber(r.radius) + ")");
+                         formatNumber(hi) + "] (half-width " + formatNumber(half) + " along it)");
     }
   }
   if (p.empty()) return;
@@ -282,6 +341,8 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
     r.v = pc.single.velocity;
     r.w = pc.single.angularVelocity;
     r.flags = pc.single.fixed ? kFixed : 0;  // held in place; its velocities are a prescribed motion
+    r.aspect.value = pc.aspect;
+    r.q = alignedWith(pc.axis / norm(pc.axis));
     p.push_back(r);
     option = "-particle_position";
   }

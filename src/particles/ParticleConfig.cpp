@@ -79,6 +79,11 @@ ParticleConfig ParticleConfig::read()
                                                    "constant velocity (forces still measured)");
     c.radius = o.real("-particle_radius", c.radius, "Radius of the single particle and of generated ones (m)");
     c.density = o.real("-particle_density", c.density, "Density of the single particle and of generated ones (kg/m^3)");
+    c.spheroid = o.choice("-particle_shape", {"sphere", "spheroid"}, 0,
+                          "Shape of the single particle: sphere (of -particle_radius) or spheroid (equatorial semi-axis "
+                          "-particle_radius, polar -particle_aspect times it; docs/shapes.md)") == 1;
+    c.aspect = o.real("-particle_aspect", c.aspect, "Spheroid: polar over equatorial semi-axis c/a (> 1 prolate, < 1 oblate)");
+    c.axis = o.vec3("-particle_axis", c.axis, "Spheroid: initial direction x,y,z of its symmetry axis");
   }
   {
     // Checks and outputs, not the set-up: a restart may change them.
@@ -159,6 +164,13 @@ void ParticleConfig::validate() const
   if (!(packed.sizeRatio >= 1 && packed.sizeRatio <= 4))
     failOption("-particles_size_ratio", "must be in [1, 4] (1: monodisperse), got " + formatNumber(packed.sizeRatio));
   if (packed.sizeRatio != 1 && !packed.set) failOption("-particles_size_ratio", "applies to -particles_packed only");
+  if (spheroid) {
+    if (!(aspect > 0) || !std::isfinite(aspect)) failOption("-particle_aspect", "must be > 0 (c/a: > 1 prolate, < 1 oblate), got " + formatNumber(aspect));
+    if (!(norm(axis) > 0) || !std::isfinite(norm(axis))) failOption("-particle_axis", "must be a non-zero direction x,y,z");
+    if (!single.set) failOption("-particle_shape", "spheroid applies to the single particle (-particle_position); a file gives shapes in its aspect and qw,qx,qy,qz columns");
+  } else if (aspect != 1 || !(axis.x == 0 && axis.y == 0 && axis.z == 1)) {
+    failOption(aspect != 1 ? "-particle_aspect" : "-particle_axis", "needs -particle_shape spheroid");
+  }
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) failOption("-particles_max_overlap", "must be in [0, 0.5), got " + formatNumber(maxOverlap));
   contact.validate();
   if (contact.departureCells > 0 && lubrication.model == LubModel::None)

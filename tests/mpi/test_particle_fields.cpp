@@ -28,6 +28,7 @@ void fill(std::int64_t&, std::int64_t, int, int) {}  // the id is the identity
 void fill(std::uint8_t& v, std::int64_t, int, int) { v = kResolvedForceOff | kTouching; }
 void fill(double& v, std::int64_t id, int f, int round) { v = tag(id, f, 0, round); }
 void fill(Vec3& v, std::int64_t id, int f, int round) { v = {tag(id, f, 0, round), tag(id, f, 1, round), tag(id, f, 2, round)}; }
+void fill(Aspect& a, std::int64_t id, int f, int round) { a.value = tag(id, f, 0, round); }
 void fill(Quaternion& q, std::int64_t id, int f, int round)
 {
   q = {tag(id, f, 0, round), tag(id, f, 1, round), tag(id, f, 2, round), tag(id, f, 3, round)};
@@ -68,10 +69,10 @@ bool same(const T& a, const T& b)
 bool keepsShape(const std::string& name)
 {
   // Identity, shape and position are set by the test itself (they decide ownership and mass).
-  return name == "id" || name == "radius" || name == "density" || name == "x";
+  return name == "id" || name == "radius" || name == "aspect" || name == "density" || name == "x";
 }
 
-// Sets every field but id, radius, density and position; round 1 changes only the kStep fields.
+// Sets every field but id, radius, aspect, density and position; round 1 changes only the kStep fields.
 void setFields(ParticleRecord& r, int round)
 {
   int f = 0;

@@ -93,6 +93,10 @@ private:
   void addSqueezeStress();
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
+  int spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt);
+  void checkShapes(const std::vector<ParticleRecord>& all) const;
+  // m v^2 + w . I w of a non-sphere
+  double twiceKinetic(std::size_t i) const;
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
@@ -127,7 +131,8 @@ private:
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)
   double skin_ = 0;        // neighbour-list skin [m]
-  double rmax_ = 0;
+  double rmax_ = 0;     // the largest bounding radius
+  bool shaped_ = false;  // a non-sphere among the particles: its orientation is integrated
   std::unique_ptr<ParticleExchange> exchange_;
   ParticleStore store_;
   CellBuckets buckets_;

@@ -17,6 +17,7 @@
 #include "vp/interactions/BassetModes.hpp"
 #include "vp/interactions/ContactHistory.hpp"
 #include "vp/particles/Quaternion.hpp"
+#include "vp/particles/Shape.hpp"
 #include <array>
 #include <cstdint>
 #include <type_traits>
@@ -46,6 +47,8 @@ struct ParticleFieldInfo {
 #define VP_PARTICLE_FIELDS(X)                                                                                         \
   X(std::int64_t, id, "id", "id", kCreate | kMigrate | kCheckpoint | kSnapshot)                                       \
   X(double, radius, "radius", "radius", kCreate | kMigrate | kCheckpoint | kSnapshot)                                 \
+  /* polar over equatorial semi-axis (particles/Shape.hpp), 1 for a sphere; radius is the equatorial one */         \
+  X(Aspect, aspect, "aspect", "aspect", kCreate | kMigrate | kCheckpoint | kSnapshot)                                 \
   X(double, density, "density", "", kCreate | kMigrate | kCheckpoint)                                                 \
   X(std::uint8_t, flags, "flags", "", kCreate | kMigrate | kCheckpoint)                                               \
   X(Vec3, x, "x,y,z", "position", kCreate | kStep | kShift | kMigrate | kCheckpoint | kSnapshot)                      \
@@ -77,6 +80,7 @@ struct ParticleFieldInfo {
 // readDoubles reads and advances o.
 inline void writeDoubles(double v, double*& o) { *o++ = v; }
 inline void writeDoubles(const Vec3& v, double*& o) { *o++ = v.x, *o++ = v.y, *o++ = v.z; }
+inline void writeDoubles(const Aspect& a, double*& o) { *o++ = a.value; }
 inline void writeDoubles(const Quaternion& q, double*& o) { *o++ = q.w, *o++ = q.x, *o++ = q.y, *o++ = q.z; }
 inline void writeDoubles(const WallSprings& a, double*& o)
 {
@@ -86,6 +90,7 @@ inline void readDoubles(const double*& o, std::int64_t& v) { v = static_cast<std
 inline void readDoubles(const double*& o, std::uint8_t& v) { v = static_cast<std::uint8_t>(*o++); }
 inline void readDoubles(const double*& o, double& v) { v = *o++; }
 inline void readDoubles(const double*& o, Vec3& v) { v.x = o[0], v.y = o[1], v.z = o[2], o += 3; }
+inline void readDoubles(const double*& o, Aspect& a) { a.value = *o++; }
 inline void readDoubles(const double*& o, Quaternion& q) { q = Quaternion{o[0], o[1], o[2], o[3]}, o += 4; }
 inline void readDoubles(const double*& o, WallSprings& a)
 {

@@ -25,9 +25,11 @@ struct ParticleStore {
 #define VP_STORE_MEMBER(T, m, cols, snap, sync) std::vector<T> m;
   VP_PARTICLE_FIELDS(VP_STORE_MEMBER)
 #undef VP_STORE_MEMBER
-  // Derived on append: inverse mass and moment of inertia (0 when fixed), position at the last
-  // rebuild, bit f of wallTouch: wallSpring[f] may be non-zero.
+  // Derived on append: inverse mass and moment of inertia (0 when fixed; a non-sphere's largest
+  // principal one, its three in the body frame in invInertiaBody), position at the last rebuild,
+  // bit f of wallTouch: wallSpring[f] may be non-zero.
   std::vector<double> mass, invMass, invInertia;
+  std::vector<Vec3> invInertiaBody;
   std::vector<Vec3> xRebuild;
   std::vector<std::uint8_t> wallTouch;
 
@@ -35,6 +37,14 @@ struct ParticleStore {
 
   std::size_t size() const { return id.size(); }
   bool fixed(std::size_t i) const { return flags[i] & kFixed; }
+  bool sphere(std::size_t i) const { return aspect[i].value == 1; }
+  Shape shape(std::size_t i) const { return {radius[i], aspect[i].value}; }
+  // The change of a non-sphere's angular velocity under the angular impulse J (space frame), at
+  // its present orientation: I^-1 J, I = R I_body R^T.
+  Vec3 spinChange(std::size_t i, const Vec3& J) const;
+  // Its angular velocity w after its orientation turned from `from` to `to` at constant angular
+  // momentum (torque-free rotation between the kicks): I(to)^-1 I(from) w.
+  Vec3 carriedSpin(std::size_t i, const Quaternion& from, const Quaternion& to, const Vec3& w) const;
 
   // Appends a particle (at the end: call only when there are no ghosts, or for ghosts).
   void append(const ParticleRecord& r);

@@ -1,5 +1,6 @@
 #pragma once
 // Unit quaternion for particle orientation (w, x, y, z), rotated by a space-frame angular velocity.
+// It maps the body frame to space: toSpace(q, v) = q v q*, toBody its inverse.
 #include "vp/core/Vec3.hpp"
 #include <cmath>
 
@@ -13,6 +14,27 @@ inline Quaternion operator*(const Quaternion& a, const Quaternion& b)
 {
   return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
           a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+
+inline Vec3 toSpace(const Quaternion& q, const Vec3& v)
+{
+  // v + 2 u x (u x v + w v), u the vector part
+  const Vec3 u{q.x, q.y, q.z};
+  return v + 2.0 * cross(u, cross(u, v) + q.w * v);
+}
+
+inline Vec3 toBody(const Quaternion& q, const Vec3& v) { return toSpace(Quaternion{q.w, -q.x, -q.y, -q.z}, v); }
+
+// The rotation taking the body z axis onto the unit vector axis (the shortest one; about x when
+// axis = -z).
+inline Quaternion alignedWith(const Vec3& axis)
+{
+  const double c = axis.z;  // cos of the angle from z
+  if (c < -1 + 1e-12) return {0, 1, 0, 0};
+  const double h = std::sqrt(0.5 * (1 + c));  // cos(angle / 2)
+  const Vec3 k = cross(Vec3{0, 0, 1}, axis);  // sin(angle) times the rotation axis
+  const double s = 0.5 / h;                    // sin(angle / 2) / sin(angle)
+  return {h, s * k.x, s * k.y, s * k.z};
 }
 
 // q <- exp(omega dt / 2) q: the rotation by angle |omega| dt about omega, renormalised. Up to
