@@ -27,8 +27,8 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine, MPI_Datat
   return all;
 }
 
-const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz,thx,thy,thz\n";
-constexpr int kCols = 23;  // id + 22 values
+const char* kHeader = "time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz,fcx,fcy,fcz,tx,ty,tz,thx,thy,thz,qw,qx,qy,qz\n";
+constexpr int kCols = 27;  // id + 26 values
 
 std::string fileName(const std::string& dir, std::int64_t id)
 {
@@ -77,6 +77,7 @@ void ParticleTracker::record(const RunView& run)
       rows.push_back(v.y);
       rows.push_back(v.z);
     }
+    rows.insert(rows.end(), {s.q[i].w, s.q[i].x, s.q[i].y, s.q[i].z});
   }
   const std::vector<double> all = gatherToRoot(comm_, rows, MPI_DOUBLE);
   int rank;

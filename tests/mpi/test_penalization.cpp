@@ -110,3 +110,49 @@ TEST_CASE("Penalization: the mask, theta and the force sums equal a sweep over e
   }
   VecDestroy(&u);
 }
+
+TEST_CASE("Penalization: a rotated spheroid's mask has its volume, centre and inertia tensor", "[mpi][coupling][shape]")
+{
+  // Prolate (aspect 2), its axis along (1, 2, 2) / 3, off the grid's symmetry, d_v / dx = 12.6:
+  // the moments of chi over each face component against the spheroid's, turned into space.
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {40, 40, 40});
+  Grid grid(comm, c.grid, c.bc);
+  Penalization pen(grid, PenalizationConfig{}, 1000, 1e-3);
+  ParticleStore s;
+  ParticleRecord r = sphere(0, {0.49, 0.52, 0.505}, 0.125, 1000);
+  r.aspect.value = 2;
+  r.q = alignedWith(Vec3{1, 2, 2} / 3.0);
+  s.append(r);
+  s.nOwned = 1;
+  pen.build(s, 1e-3, 5e5);
+  const Shape g = s.shape(0);
+  const Vec3 Ib = g.volume() * g.inertiaOverMass();
+  Tensor3 body{};
+  body[0] = Ib.x, body[4] = Ib.y, body[8] = Ib.z;
+  const Tensor3 I = rotatedTensor(body, r.q);  // per unit density
+  FaceArray chi(grid.faceDM(), pen.chi(), true);
+  const double dV = grid.cellVolume();
+  for (int m = 0; m < 3; ++m) {
+    double sums[13] = {};  // volume, first moments, second moments (3 x 3)
+    for (PetscInt k = grid.start(2); k < grid.end(2); ++k)
+      for (PetscInt j = grid.start(1); j < grid.end(1); ++j)
+        for (PetscInt i = grid.start(0); i < grid.end(0); ++i) {
+          const PetscInt q[3] = {i, j, k};
+          Vec3 x{grid.cellCentre(0, i), grid.cellCentre(1, j), grid.cellCentre(2, k)};
+          x[m] = grid.faceCoord(m, q[m]);
+          const double w = chi.a[k][j][i][m] * dV;
+          const Vec3 d = x - r.x;
+          sums[0] += w;
+          for (int a = 0; a < 3; ++a) sums[1 + a] += w * x[a];
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) sums[4 + 3 * a + b] += w * ((a == b) * dot(d, d) - d[a] * d[b]);
+        }
+    MPI_Allreduce(MPI_IN_PLACE, sums, 13, MPI_DOUBLE, MPI_SUM, comm);
+    INFO("face component " << m);
+    CHECK(sums[0] == Approx(g.volume()).epsilon(0.01));
+    for (int a = 0; a < 3; ++a) CHECK(sums[1 + a] / sums[0] == Approx(r.x[a]).margin(0.05 * grid.h(0)));  // a twentieth of a cell
+    const double scale = I[0] + I[4] + I[8];
+    for (int e = 0; e < 9; ++e) CHECK(sums[4 + e] == Approx(I[e]).margin(0.01 * scale));
+  }
+}

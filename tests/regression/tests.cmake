@@ -96,6 +96,28 @@ vp_bad_input(contact_no_stiffness 1 "option -contact_tc: a DEM-only run needs a 
 vp_bad_input(particles_short_periodic 1 "option -grid_hi: the periodic length along x \\(0.002 m\\) is shorter than the particle halo"
              -options_file ${VP_DEM_DATA}/box.opts -bc_xlo periodic -bc_xhi periodic -grid_n 2,4,4
              -grid_hi 0.002,0.04,0.04 -particle_position 0.001,0.02,0.02 -particle_radius 0.001)
+# Spheroids (docs/shapes.md): the shape options, and what a spheroid cannot do yet.
+set(VP_SPHEROID -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particle_radius 0.002)
+vp_bad_input(spheroid_aspect 1 "option -particle_aspect: must be > 0 \\(c/a: > 1 prolate, < 1 oblate\\), got 0"
+             ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 0)
+vp_bad_input(spheroid_axis 1 "option -particle_axis: must be a non-zero direction x,y,z"
+             ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -particle_axis 0,0,0)
+vp_bad_input(spheroid_aspect_of_sphere 1 "option -particle_aspect: needs -particle_shape spheroid" ${VP_SPHEROID} -particle_aspect 2)
+vp_bad_input(spheroid_generated 1 "option -particle_shape: spheroid applies to the single particle"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_lattice 0,0,0,0.04,0.04,0.04,0.01,0.002,0,1 -particle_shape spheroid)
+vp_bad_input(spheroid_pairs 1 "option -particles_file: a spheroid runs alone for now \\(contacts between spheroids are not implemented\\); got 2"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv)
+vp_bad_input(spheroid_sphere_aspect 1 "option -particles_file: .*line 2: a sphere has aspect 1"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/sphere_aspect.csv)
+vp_bad_input(spheroid_lubrication 1 "option -lub_model: a spheroid's lubrication is not implemented yet"
+             ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -lub_model llcm -lub_activation 0.05)
+vp_bad_input(spheroid_thin 1 "option -particle_aspect: the spheroid's thickness 2 min\\(a, c\\) = 0.002 m spans less than two cells"
+             -grid_n 8,8,8 -grid_lo 0,0,0 -grid_hi 0.04,0.04,0.04 -particle_position 0.02,0.02,0.02 -particle_radius 0.004
+             -particle_shape spheroid -particle_aspect 0.25)
+# The shipped Jeffery case to gamma t = 2 on 1 and 3 ranks: the axis turns as Jeffery's orbit says.
+add_test(NAME case_jeffery_start COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_jeffery_start.py $<TARGET_FILE:vpsolve>
+         ${VP_CASES}/jeffery_orbit.opts ${CMAKE_CURRENT_BINARY_DIR}/case_jeffery_start)
+set_tests_properties(case_jeffery_start PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 600)
 
 # Time-series rows every -series_every steps and at the last step.
 vp_case_run(series_every 2 --steps 10,20,25 -- $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts

@@ -181,6 +181,54 @@ TEST_CASE("CSV: an optional fixed column holds the particles marked 1 and reject
   std::remove(csv.c_str());
 }
 
+TEST_CASE("Particle tables: optional shape columns (aspect, orientation) in CSV and HDF5; absent ones give spheres", "[dem][shape]")
+{
+  const std::string csv = tempPath("shape.csv"), h5 = tempPath("shape.h5");
+  {
+    std::ofstream f(csv);
+    f << "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,shape,aspect,qw,qx,qy,qz\n"
+      << "0,0.1,0.1,0.1,0.01,1000,0,0,0,0,0,0,spheroid,2.5,2,0,2,0\n"  // normalised on reading
+      << "1,0.3,0.1,0.1,0.01,1000,0,0,0,0,0,0,sphere,1,1,0,0,0\n";
+  }
+  const auto p = readParticleCsv(csv);
+  REQUIRE(p.size() == 2);
+  CHECK(p[0].aspect.value == 2.5);
+  CHECK(p[0].q.w == Approx(std::sqrt(0.5)));
+  CHECK(p[0].q.y == Approx(std::sqrt(0.5)));
+  CHECK(p[1].aspect.value == 1);
+  {
+    hid_t file = H5Fcreate(h5.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    hsize_t n = 1;
+    auto put = [&](const char* name, double v) {
+      hid_t space = H5Screate_simple(1, &n, nullptr);
+      hid_t ds = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, &v);
+      H5Dclose(ds);
+      H5Sclose(space);
+    };
+    const double row[12] = {4, 0.1, 0.2, 0.3, 0.01, 1000, 0, 0, 0, 0, 0, 0};
+    for (int c = 0; c < 12; ++c) put(kParticleColumns[c], row[c]);
+    put("aspect", 0.5);
+    H5Fclose(file);
+  }
+  const auto q = readParticleHdf5(h5);
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].aspect.value == 0.5);
+  CHECK(q[0].q.w == 1);  // no orientation columns: the body frame is the space frame
+  {
+    std::ofstream f(csv);
+    f << "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,aspect,qw\n0,0.1,0.1,0.1,0.01,1000,0,0,0,0,0,0,-1,1\n";
+  }
+  CHECK_THROWS_WITH(readParticleCsv(csv), Catch::Contains("line 2: aspect must be > 0, got -1"));
+  {
+    std::ofstream f(csv);
+    f << "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,aspect,qw\n0,0.1,0.1,0.1,0.01,1000,0,0,0,0,0,0,2,1\n";
+  }
+  CHECK_THROWS_WITH(readParticleCsv(csv), Catch::Contains("line 2: give all four of qw,qx,qy,qz"));
+  std::remove(csv.c_str());
+  std::remove(h5.c_str());
+}
+
 TEST_CASE("Particle validation names the problem", "[dem]")
 {
   Config c = boxConfig({0, 0, 0}, {0.1, 0.1, 0.1}, {4, 4, 4});

@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""Non-spherical particles (docs/shapes.md), plots into docs/validation/:
+  drag: Stokes drag of a fixed spheroid (aspect 2, 3 and 1/2; axis along and across the flow) and
+        of the sphere of equal volume in a periodic box, against Oberbeck's exact values, the box
+        removed with two box sizes; the sphere, whose periodic drag is known (Hasimoto), measures
+        the error the runs share (about 30 minutes on 2 cores at the default --res 12)
+  jeffery: cases/jeffery_orbit.opts, a prolate spheroid (aspect 2) in shear at Re_p 0.01: the
+        axis angle against Jeffery's orbit and its period 2 pi (r + 1/r) / gamma (about 10 minutes)
+usage: shapes.py [drag|jeffery|all] [--res N] [--reuse]
+  --res N: equal-volume diameter in cells (12)
+  --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
+import csv, math, os, subprocess, sys
+from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
+
+what = chosen_study(__doc__, ("drag", "jeffery"), valued=("--res",))
+res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
+reuse = "--reuse" in sys.argv
+RV = 0.126            # equal-volume radius (m) in the box of side 1
+HASIMOTO = 2.8373     # 1.7601 (4 pi / 3)^(1/3): the first-order periodic correction of the mobility, per R_v / L
+
+
+def oberbeck(r):
+    """Drag / (6 pi mu U R_v) of a spheroid of aspect r = c/a in an unbounded Stokes flow, along and
+    across its axis (Oberbeck 1876; Happel & Brenner, section 4-26)."""
+    rv = r ** (1 / 3)
+    if r == 1:
+        return 1.0, 1.0
+    if r > 1:
+        c, e = r, math.sqrt(1 - 1 / r ** 2)
+        L = math.log((1 + e) / (1 - e))
+        return 16 * c * e ** 3 / ((1 + e * e) * L - 2 * e) / (6 * rv), 32 * c * e ** 3 / (2 * e + (3 * e * e - 1) * L) / (6 * rv)
+    e = math.sqrt(1 - r * r)
+    s, q = math.asin(e), math.sqrt(1 - e * e)
+    return 8 * e ** 3 / (e * q - (1 - 2 * e * e) * s) / (6 * rv), 16 * e ** 3 / ((1 + 2 * e * e) * s - e * q) / (6 * rv)
+
+
+def run(aspect, axis, L):
+    """K = F / (6 pi mu R_v U) in a periodic box of side L driven by a body force, U the mean velocity."""
+    n = int(round(res * L / (2 * RV)))
+    out = os.path.join(scratch, "vp_val_shape_%g_%s_%g_%d" % (aspect, axis, L, res))
+    # Three momentum times rho L^3 / (6 pi mu R_v K) (about 0.3 L^3 s here): F / U is then within
+    # about 1 % of its steady value, the rest of the way a slow creep of many steps (the stiff
+    # viscous modes of Crank-Nicolson at nu dt / h^2 = 23 decay slowly), the same for every shape
+    # at the same step: the sphere measures it.
+    tf = 1.0 * L ** 3
+    done = os.path.exists(os.path.join(out, "particle_0.csv")) and \
+        float(list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))[-1]["time"]) >= tf - 1e-9
+    if not (reuse and done):
+        shape = ["-particle_shape", "sphere", "-particle_radius", RV] if aspect == 1 else \
+            ["-particle_shape", "spheroid", "-particle_radius", RV / aspect ** (1 / 3), "-particle_aspect", aspect,
+             "-particle_axis", "1,0,0" if axis == "along" else "0,1,0"]
+        cmd = ["mpirun", "-n", ranks, vpsolve, "-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (L, L, L)]
+        for f in ("x", "y", "z"):
+            cmd += ["-bc_%slo" % f, "periodic", "-bc_%shi" % f, "periodic"]
+        cmd += ["-fluid_rho", 1, "-fluid_mu", 1, "-fluid_body_force", "1,0,0", "-particle_position", "%g,%g,%g" % (L / 2, L / 2, L / 2),
+                "-particle_density", 1, "-particle_fixed", "-time_dt", 0.01, "-time_final", tf, "-track_particles", "all",
+                "-output_every", 0, "-output_dt", 0, "-monitor_every", 0, "-output_dir", out, "-output_overwrite"] + shape
+        subprocess.run([str(c) for c in cmd], check=True, stdout=subprocess.DEVNULL)
+    part = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
+    diag = list(csv.DictReader(open(os.path.join(out, "diagnostics.csv"))))
+    F, U = float(part[-1]["fx"]), float(diag[-1]["mean_u"])
+    return F / (6 * math.pi * RV * U)
+
+
+def drag():
+    boxes = (1.0, 1.5)
+    cases = [(1, "along"), (2, "along"), (2, "across"), (3, "along"), (3, "across"), (0.5, "along"), (0.5, "across")]
+    x = [RV / L for L in boxes]
+
+    def unbounded(K):
+        """1/K(L) = 1/K_inf - HASIMOTO R_v/L + beta (R_v/L)^3: the point-force image term is the same
+        for any body; the next one (the particle's finite size) is fitted from the two boxes."""
+        beta = ((1 / K[0] + HASIMOTO * x[0]) - (1 / K[1] + HASIMOTO * x[1])) / (x[0] ** 3 - x[1] ** 3)
+        return 1 / (1 / K[0] + HASIMOTO * x[0] - beta * x[0] ** 3)
+
+    def hasimoto(L):
+        c = 4 * math.pi / 3 * (RV / L) ** 3
+        return 1 / (1 - 1.7601 * c ** (1 / 3) + c - 1.5593 * c * c)
+
+    sphere = [run(1, "along", L) for L in boxes]
+    shared = [s / hasimoto(L) for s, L in zip(sphere, boxes)]  # the runs' common error, per box
+    print("drag: sphere K(L=1) %.4f (Hasimoto %.4f, %+.2f %%), K(L=1.5) %.4f (%.4f, %+.2f %%)" %
+          (sphere[0], hasimoto(1), 100 * (shared[0] - 1), sphere[1], hasimoto(1.5), 100 * (shared[1] - 1)), flush=True)
+    rows = []
+    for aspect, axis in cases:
+        K = sphere if aspect == 1 else [run(aspect, axis, L) for L in boxes]
+        raw, kinf = unbounded(K), unbounded([k / e for k, e in zip(K, shared)])
+        ref = oberbeck(aspect)[0 if axis == "along" else 1]
+        rows.append((aspect, axis, K, kinf, ref, raw))
+        print("drag: aspect %g %-6s K(L=1) %.4f  K(L=1.5) %.4f  unbounded %.4f (%+.2f %%), with the sphere's error removed %.4f "
+              "(%+.2f %%); Oberbeck %.4f" % (aspect, axis, K[0], K[1], raw, 100 * (raw / ref - 1), kinf, 100 * (kinf / ref - 1), ref),
+              flush=True)
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    labels = ["%g %s" % (a, x) if a != 1 else "sphere" for a, x, *_ in rows]
+    pos = range(len(rows))
+    ax.bar([p - 0.27 for p in pos], [r[4] for r in rows], 0.27, label="Oberbeck (exact)", color="0.7")
+    ax.bar(list(pos), [r[5] for r in rows], 0.27, label="vpsolve, box removed", color="C1")
+    ax.bar([p + 0.27 for p in pos], [r[3] for r in rows], 0.27, label="... and the sphere's error", color="C0")
+    for p, r in zip(pos, rows):
+        ax.annotate("%+.1f %%" % (100 * (r[5] / r[4] - 1)), (p, r[5]), textcoords="offset points", xytext=(-10, 12), fontsize=6, color="C1")
+        ax.annotate("%+.1f %%" % (100 * (r[3] / r[4] - 1)), (p + 0.27, r[3]), textcoords="offset points", xytext=(-8, 3), fontsize=6, color="C0")
+    ax.set_xticks(list(pos))
+    ax.set_xticklabels(labels, fontsize=8)
+    ax.set_ylim(0.8, 1.3)
+    ax.set_xlabel("aspect c/a, axis relative to the flow")
+    ax.set_ylabel("drag / (6 pi mu U R_v)")
+    ax.set_title("Fixed spheroid, Stokes flow, d_v/dx = %d" % res, fontsize=10)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "spheroid_drag.png"), dpi=120)
+    return rows
+
+
+def axis_angle(row):
+    """Angle (rad) of the body z axis in the flow-gradient (x-z) plane, from the flow direction x."""
+    w, x, y, z = (float(row[k]) for k in ("qw", "qx", "qy", "qz"))
+    return math.atan2(1 - 2 * (x * x + y * y), 2 * (x * z + w * y))
+
+
+def jeffery():
+    out = os.path.join(scratch, "vp_val_shape_jeffery")
+    case = os.path.join(root, "cases", "jeffery_orbit.opts")
+    if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-options_file", case, "-output_dir", out, "-output_overwrite",
+                        "-monitor_every", "0", "-output_dt", "0"], check=True, stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
+    t = [float(r["time"]) for r in rows]
+    turned, last = [0.0], axis_angle(rows[0])
+    for r in rows[1:]:  # unwrapped, counted positive in the sense of the shear
+        a = axis_angle(r)
+        d = (last - a + math.pi) % (2 * math.pi) - math.pi
+        turned.append(turned[-1] + d)
+        last = a
+    r_, gamma = 2.0, 1.0
+    T = 2 * math.pi * (r_ + 1 / r_) / gamma
+
+    def crossing(level):
+        for k in range(1, len(t)):
+            if turned[k - 1] < level <= turned[k]:
+                return t[k - 1] + (level - turned[k - 1]) / (turned[k] - turned[k - 1]) * (t[k] - t[k - 1])
+        return None
+
+    half, full = crossing(math.pi), crossing(2 * math.pi)
+    for name, tc, n in (("half", half, 0.5), ("full", full, 1.0)):
+        if tc is not None:
+            print("jeffery: %s turn at t = %.3f: period %.3f vs Jeffery %.3f (%+.2f %%)" % (name, tc, tc / n, T, 100 * (tc / n / T - 1)),
+                  flush=True)
+    exact = []
+    for tt in t:  # Jeffery: tan(angle) = tan(2 pi t / T) / r, unwrapped
+        ph = 2 * math.pi * tt / T
+        k = math.floor(ph / math.pi + 0.5)
+        exact.append(math.atan(math.tan(ph) / r_) + k * math.pi)
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    ax.plot([x * gamma for x in t], [math.degrees(a) for a in exact], "k--", label="Jeffery (1922), r = 2")
+    ax.plot([x * gamma for x in t], [math.degrees(a) for a in turned], label="vpsolve, Re_p 0.01, d_v/dx 10")
+    ax.set_xlabel("gamma t")
+    ax.set_ylabel("axis angle from the flow direction (deg)")
+    ax.set_title("Prolate spheroid in shear: period %s" % ("%.2f (Jeffery %.2f)" % (full, T) if full else "not reached"), fontsize=10)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "jeffery_orbit.png"), dpi=120)
+    return full, T
+
+
+if what in ("drag", "all"):
+    drag()
+if what in ("jeffery", "all"):
+    jeffery()
