@@ -6,13 +6,16 @@
         the error the runs share (about 30 minutes on 2 cores at the default --res 12)
   jeffery: cases/jeffery_orbit.opts, a prolate spheroid (aspect 2) in shear at Re_p 0.01: the
         axis angle against Jeffery's orbit and its period 2 pi (r + 1/r) / gamma (about 10 minutes)
-usage: shapes.py [drag|jeffery|all] [--res N] [--reuse]
+  bounce: a spheroid (aspect 2, tilted 30 degrees) driven onto a wall as in cases/restitution.opts
+        (steel in oil, St about 150 on the equal-volume diameter, d/dx 8 on 2a): dry, in the liquid
+        without lubrication, and with the LLCM: rebound and spin (about 3 minutes)
+usage: shapes.py [drag|jeffery|bounce|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
 
-what = chosen_study(__doc__, ("drag", "jeffery"), valued=("--res",))
+what = chosen_study(__doc__, ("drag", "jeffery", "bounce"), valued=("--res",))
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
 reuse = "--reuse" in sys.argv
 RV = 0.126            # equal-volume radius (m) in the box of side 1
@@ -162,7 +165,42 @@ def jeffery():
     return full, T
 
 
+def bounce():
+    case = os.path.join(root, "cases", "restitution.opts")
+    shape = ["-grid_n", "60,60,70", "-particle_shape", "spheroid", "-particle_aspect", 2, "-particle_radius", 0.00119,
+             "-particle_axis", "0.5,0,0.866", "-time_final", 0.04, "-output_dt", 0, "-monitor_every", 0]
+    variants = (("dry", ["-fluid_off", "-contact_hydro_departure", 0, "-contact_hydro_history", 0, "-lub_model", "none"]),
+                ("liquid, no lubrication", ["-lub_model", "none", "-contact_hydro_departure", 0, "-contact_hydro_history", 0]),
+                ("liquid, LLCM", []))
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
+    for name, extra in variants:
+        out = os.path.join(scratch, "vp_val_shape_bounce_" + name.split(",")[-1].strip().replace(" ", "_"))
+        if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+            subprocess.run(["mpirun", "-n", ranks, vpsolve, "-options_file", case, "-output_dir", out, "-output_overwrite"] +
+                           [str(o) for o in shape + extra], check=True, stdout=subprocess.DEVNULL)
+        rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
+        t = [float(r["time"]) for r in rows]
+        vz = [float(r["vz"]) for r in rows]
+        wy = [float(r["wy"]) for r in rows]
+        k = min(range(len(rows)), key=lambda i: float(rows[i]["z"]))  # the deepest point
+        vin, vout = min(vz[:k + 1]), max(vz[k:])
+        print("bounce: %-24s approach %.3f m/s, rebound %.3f m/s, e = %.3f; spin 2 ms before the deepest point %.1f, at the end %.1f rad/s" %
+              (name, vin, vout, vout / -vin, wy[max(k - 10, 0)], wy[-1]), flush=True)
+        axes[0].plot(t, vz, label="%s: e %.2f" % (name, vout / -vin))
+        axes[1].plot(t, wy, label=name)
+    axes[0].set_xlabel("t (s)")
+    axes[0].set_ylabel("v_z (m/s)")
+    axes[1].set_xlabel("t (s)")
+    axes[1].set_ylabel("w_y (rad/s)")
+    axes[0].legend(fontsize=7)
+    fig.suptitle("Spheroid (aspect 2, tilted 30 deg) onto a wall: steel in oil, St about 150", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "spheroid_bounce.png"), dpi=120)
+
+
 if what in ("drag", "all"):
     drag()
 if what in ("jeffery", "all"):
     jeffery()
+if what in ("bounce", "all"):
+    bounce()

@@ -78,9 +78,9 @@ PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double 
 
 } // namespace
 
-PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap)
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale)
 {
-  const double a = std::min(s.radiusI, s.radiusJ);
+  const double a = scale > 0 ? scale : std::min(s.radiusI, s.radiusJ);
   const double hAct = p.activationGap(a);
   if (p.model == LubModel::None || !(s.gap < hAct) || s.gap <= contactGap) return {};
 

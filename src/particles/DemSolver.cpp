@@ -85,14 +85,15 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
 }
 
 // What the non-spheres can do so far (docs/shapes.md): one at a time (no spheroid pair contact
-// yet), without lubrication (its geometry-free correction is not wired in), resolved by the grid.
+// yet), the squeeze at walls explicit, resolved by the grid.
 void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
 {
   const std::string option = pc_.spheroid ? "-particle_shape" : "-particles_file";
   if (all.size() > 1)
     failOption(option, "a spheroid runs alone for now (contacts between spheroids are not implemented); got " +
                            std::to_string(all.size()) + " particles");
-  if (lub_.model != LubModel::None) failOption("-lub_model", "a spheroid's lubrication is not implemented yet: use -lub_model none");
+  if (lub_.model != LubModel::None && lub_.implicitSqueeze)
+    failOption("-lub_integration", "implicit is for spheres: a spheroid's squeeze at a wall is explicit (use explicit)");
   const double h = std::max({grid_.h(0), grid_.h(1), grid_.h(2)});
   const Shape g{all[0].radius, all[0].aspect.value};
   if (hydro_ && 2 * g.smallestSemiAxis() < 2 * h)
@@ -324,17 +325,21 @@ void DemSolver::computeForces(double dt)
 // The walls of a non-sphere (particles/Shape.hpp): the contact at its surface point nearest the wall,
 // the point whose outward normal is the wall's inward one reversed, at the gap of spheres
 // (2 x roughness x the equatorial radius). The normal force acts there, so a tilted spheroid feels
-// its torque. Without rolling resistance (a non-sphere resists rolling by its shape) and without
-// lubrication (ParticleConfig::validate).
+// its torque. Without rolling resistance (a non-sphere resists rolling by its shape). Apart, the
+// squeeze of the lubrication model, geometry-free: that of the sphere whose gap has the same
+// curvatures, R^2 = 2 / ((k1 + k2) sqrt(k1 k2)) from the surface's principal curvatures there, at
+// the local gap, acting at that point (docs/shapes.md); no tangential terms.
 int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
 {
   ParticleStore& s = store_;
   const Shape g = s.shape(i);
-  const double reachBeyond = 2 * law_.roughness() * g.a;
+  const double reachBeyond = law_.roughnessGap(g.a, 0);
+  const bool lubricated = lub_.model != LubModel::None;
+  const double lubReach = lubricated ? lub_.activationGap(g.a) : 0;
   int touching = 0;
   bool departing = false;
   std::uint8_t touch = 0;
-  if (s.wallTouch[i] || nearWall(s.x[i], g.boundingRadius() + std::max(reachBeyond, handOff_.departureGap()))) {
+  if (s.wallTouch[i] || nearWall(s.x[i], g.boundingRadius() + std::max({reachBeyond, lubReach, handOff_.departureGap()}))) {
     for (int f : activeWalls_) {
       const Wall& wall = walls_[f];
       const Vec3 n = wall.normal();
@@ -356,7 +361,27 @@ int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
         ++touching;
         handOff_.touchWall(s, i, overlap, coef.kn);
       }
-      departing = handOff_.wallLeaving(s, i, wall.velocity, n, gap) || departing;
+      const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, n, gap);
+      departing = departing || leaving;
+      if (overlap <= 0 && lubricated && (gap < lubReach || leaving)) {
+        const Vec3 p = g.pointWithNormal(towardWall), lever = toSpace(s.q[i], p);
+        const std::array<double, 2> k = tangentEigenvalues(g.curvature(p), towardWall);
+        PairState st;
+        st.normal = -n;
+        st.gap = gap;
+        st.radiusI = std::sqrt(squeezeRadiusSquared(k[0], k[1]));
+        st.radiusJ = kWallRadius;
+        st.velocityI = dot(s.v[i] + cross(s.w[i], lever), n) * n;  // the squeeze alone
+        st.velocityJ = dot(wall.velocity, n) * n;
+        st.viscosity = mu_;
+        st.slipWall = wall.slip;
+        const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, g.a) : lub_;
+        const Vec3 squeeze = lubricationForce(film, st, reachBeyond, g.a).forceI;
+        if (lubWatch_) watchLubrication(st, reachBeyond, s.invMass[i]);
+        F += squeeze;
+        if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, squeeze);
+        T += cross(lever, squeeze);
+      }
     }
   }
   s.wallTouch[i] = touch;
@@ -557,6 +582,18 @@ void DemSolver::addSqueezeStress()
 
 double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
 {
+  if (shaped_) {
+    // One spheroid (checkShapes): its squeeze at a wall with the larger R^2 of its pole (a^4 / c^2)
+    // and its equator (curvatures 1/a and a/c^2); BLCM's resistance, which bounds LLCM's.
+    const ParticleRecord& r = all[0];
+    const Shape g{r.radius, r.aspect.value};
+    if (activeWalls_.empty() || (r.flags & kFixed)) return 0;
+    const double a = g.a, c = g.c();
+    const double R2 = std::max(a * a * a * a / (c * c), squeezeRadiusSquared(1 / a, a / (c * c)));
+    const double h = std::max(lub_.saturation * a, law_.roughnessGap(a, 0));
+    const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));
+    return 6 * M_PI * mu_ * R2 * (1 / h - 1 / hAct) / g.mass(r.density);
+  }
   // Particle classes (radius, inverse mass): the pair rate c (1/m_i + 1/m_j) over all class pairs.
   std::vector<std::pair<double, double>> classes;
   for (const ParticleRecord& r : all) {

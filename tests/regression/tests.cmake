@@ -109,8 +109,8 @@ vp_bad_input(spheroid_pairs 1 "option -particles_file: a spheroid runs alone for
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv)
 vp_bad_input(spheroid_sphere_aspect 1 "option -particles_file: .*line 2: a sphere has aspect 1"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/sphere_aspect.csv)
-vp_bad_input(spheroid_lubrication 1 "option -lub_model: a spheroid's lubrication is not implemented yet"
-             ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -lub_model llcm -lub_activation 0.05)
+vp_bad_input(spheroid_implicit_squeeze 1 "option -lub_integration: implicit is for spheres"
+             ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -lub_model llcm -lub_activation 0.05 -lub_integration implicit)
 vp_bad_input(spheroid_thin 1 "option -particle_aspect: the spheroid's thickness 2 min\\(a, c\\) = 0.002 m spans less than two cells"
              -grid_n 8,8,8 -grid_lo 0,0,0 -grid_hi 0.04,0.04,0.04 -particle_position 0.02,0.02,0.02 -particle_radius 0.004
              -particle_shape spheroid -particle_aspect 0.25)

@@ -72,8 +72,10 @@ private:
 PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s);
 
 // The correction a pair loop adds for a sphere-sphere or sphere-wall pair (defaults resolved).
-// contactGap: the surface gap at which the contact model takes over (roughness).
-PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap);
+// contactGap: the surface gap at which the contact model takes over (roughness). scale: the length
+// the activation and saturation gaps are fractions of; 0: the smaller radius (a spheroid gives its
+// equatorial semi-axis while its radii are those of the gap's curvatures).
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale = 0);
 
 // Largest normal resistance c = |F_n| / U_n the correction reaches for this pair geometry (at
 // max(h_sat, contactGap)); an explicit dashpot c on a reduced mass m is stable for dt < m / c with
