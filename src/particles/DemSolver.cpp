@@ -243,7 +243,7 @@ void DemSolver::computeForces(double dt)
   ContactCoefficients wallCoef;
   for (std::size_t i = 0; i < s.nOwned; ++i) {
     Vec3 F = s.force[i], T = s.torque[i];
-    if (!s.sphere(i)) {
+    if (shaped_ && !s.sphere(i)) {
       wallContacts += spheroidWalls(i, F, T, dt);
       s.force[i] = F + s.mass[i] * gravity_;
       s.torque[i] = T;
@@ -441,7 +441,7 @@ void DemSolver::substep(double dt)
   };
   auto kickW = [&](std::size_t i) {
     const Vec3 T = Hydro ? s.torque[i] + handOff_.resolvedTorque(s, i) : s.torque[i];
-    return s.sphere(i) ? (half * s.invInertia[i]) * T : s.spinChange(i, half * T);
+    return !shaped_ || s.sphere(i) ? (half * s.invInertia[i]) * T : s.spinChange(i, half * T);
   };
   if (lub_.implicitSqueeze) {
     // Each half kick ends with the squeeze over the half step, implicitly (solveSqueeze).
@@ -477,7 +477,7 @@ void DemSolver::substep(double dt)
   // A loop of its own: independent rotations pipeline better than inside the kick. A non-sphere
   // turns at constant angular momentum between the kicks (Euler's equations, the gyroscopic term
   // included), at the spin of the half-turned body (the midpoint rule: second order).
-  if (pc_.orientation || shaped_)
+  if (shaped_)
     for (std::size_t i = 0; i < s.nOwned; ++i) {
       if (s.sphere(i)) {
         s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
@@ -488,6 +488,8 @@ void DemSolver::substep(double dt)
       s.wHalf[i] = s.carriedSpin(i, before, s.q[i], s.wHalf[i]);
       s.w[i] = s.carriedSpin(i, before, s.q[i], s.w[i]);
     }
+  else if (pc_.orientation)
+    for (std::size_t i = 0; i < s.nOwned; ++i) s.q[i] = rotated(s.q[i], s.wHalf[i], dt);
   if (needRebuild())
     rebuild();
   else
@@ -505,7 +507,7 @@ void DemSolver::substep(double dt)
   double ke = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i)
     if (!s.fixed(i))
-      ke += s.sphere(i) ? s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i])) : twiceKinetic(i);
+      ke += !shaped_ || s.sphere(i) ? s.mass[i] * (dot(s.v[i], s.v[i]) + 0.4 * s.radius[i] * s.radius[i] * dot(s.w[i], s.w[i])) : twiceKinetic(i);
   kineticEnergy_ = 0.5 * ke;
 }
 
@@ -672,7 +674,7 @@ void DemSolver::relax(std::size_t i, double half, Vec3& v, Vec3& w) const
   const ParticleStore& s = store_;
   if (drag_ == 0 || handOff_.resolvedOff(s, i)) return;
   // A non-sphere: the Stokes resistance of its equal-volume sphere, on its most mobile axis.
-  const double a = s.sphere(i) ? s.radius[i] : s.shape(i).equalVolumeRadius();
+  const double a = !shaped_ || s.sphere(i) ? s.radius[i] : s.shape(i).equalVolumeRadius();
   const double cv = half * s.invMass[i] * drag_ * 6 * M_PI * mu_ * a;
   const double cw = half * s.invInertia[i] * drag_ * 8 * M_PI * mu_ * a * a * a;
   v = (1 / (1 + cv)) * (v + cv * s.vSeen[i]);
@@ -704,7 +706,7 @@ DemDiagnostics DemSolver::diagnostics() const
     ke = 0;
     const ParticleStore& s = store_;
     for (std::size_t i = 0; i < s.nOwned; ++i)
-      if (!s.fixed(i)) ke += 0.5 * (s.sphere(i) ? s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i] : twiceKinetic(i));
+      if (!s.fixed(i)) ke += 0.5 * (!shaped_ || s.sphere(i) ? s.mass[i] * dot(s.v[i], s.v[i]) + dot(s.w[i], s.w[i]) / s.invInertia[i] : twiceKinetic(i));
   }
   double local[4] = {ke, double(store_.nOwned), double(contacts_), double(wallContacts_)}, global[4];
   MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_SUM, grid_.comm());
