@@ -84,22 +84,23 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   if (!restart) computeForces(0);
 }
 
-// What the non-spheres can do so far (docs/shapes.md): one at a time (no spheroid pair contact
-// yet), the squeeze at walls explicit, resolved by the grid.
+// What the non-spheres can do so far (docs/shapes.md): contacts with walls and with any particle,
+// the squeeze at walls (explicit) but no lubrication between particles, resolved by the grid.
 void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
 {
-  const std::string option = pc_.spheroid ? "-particle_shape" : "-particles_file";
-  if (all.size() > 1)
-    failOption(option, "a spheroid runs alone for now (contacts between spheroids are not implemented); got " +
-                           std::to_string(all.size()) + " particles");
+  if (lub_.model != LubModel::None && all.size() > 1)
+    failOption("-lub_model", "lubrication between a spheroid and another particle is not implemented: with spheroids, use it "
+                             "for one particle (at walls) or -lub_model none; got " + std::to_string(all.size()) + " particles");
   if (lub_.model != LubModel::None && lub_.implicitSqueeze)
     failOption("-lub_integration", "implicit is for spheres: a spheroid's squeeze at a wall is explicit (use explicit)");
   const double h = std::max({grid_.h(0), grid_.h(1), grid_.h(2)});
-  const Shape g{all[0].radius, all[0].aspect.value};
-  if (hydro_ && 2 * g.smallestSemiAxis() < 2 * h)
-    failOption(pc_.spheroid ? "-particle_aspect" : "-particles_file",
-               "the spheroid's thickness 2 min(a, c) = " + formatNumber(2 * g.smallestSemiAxis()) + " m spans less than two cells (" +
-                   formatNumber(2 * h) + " m): the mask cannot resolve it");
+  for (const ParticleRecord& r : all) {
+    const Shape g{r.radius, r.aspect.value};
+    if (hydro_ && 2 * g.smallestSemiAxis() < 2 * h)
+      failOption(pc_.spheroid ? "-particle_aspect" : "-particles_file",
+                 "the spheroid " + std::to_string(r.id) + "'s thickness 2 min(a, c) = " + formatNumber(2 * g.smallestSemiAxis()) +
+                     " m spans less than two cells (" + formatNumber(2 * h) + " m): the mask cannot resolve it");
+  }
 }
 
 void DemSolver::saveState(StateWriter& w)
@@ -163,6 +164,10 @@ void DemSolver::computeForces(double dt)
   if (lub_.implicitSqueeze) squeezePairs_.clear();
   for (std::size_t k = 0; k < P.size(); ++k) {
     const std::uint32_t i = P.first[k], j = P.second[k];
+    if (shaped_ && !(s.sphere(i) && s.sphere(j))) {
+      contacts += shapedPair(k, dt) && i < s.nOwned;
+      continue;
+    }
     const Vec3 d = s.x[i] - s.x[j];
     const double r2 = dot(d, d);
     const double reach = (s.radius[i] + s.radius[j]) * (1 + rough);
@@ -320,6 +325,43 @@ void DemSolver::computeForces(double dt)
   if (pc_.dragViscosity > 0) addStokesDrag();
   contacts_ = contacts;
   wallContacts_ = wallContacts;
+}
+
+// A pair with a non-sphere (particles/Shape.hpp): the contact at the bodies' deepest points
+// (closestPoints), at the spheres' gap (roughness x the sum of the equatorial radii), the spring-
+// dashpot and Coulomb law of spheres along the common normal, acting at the midpoint of the two
+// points on each body's lever. No rolling resistance, no lubrication (checkShapes). Returns whether
+// the pair touches.
+bool DemSolver::shapedPair(std::size_t k, double dt)
+{
+  ParticleStore& s = store_;
+  PairList& P = pairs_;
+  const std::uint32_t i = P.first[k], j = P.second[k];
+  const Shape gi = s.shape(i), gj = s.shape(j);
+  const Vec3 d = s.x[j] - s.x[i];
+  const ClosestPoints c = closestPoints(gi, s.q[i], gj, s.q[j], d, d);
+  const double overlap = law_.roughnessGap(gi.a, gj.a) - c.gap;
+  P.departure[k] = 0;
+  if (overlap <= 0) {
+    P.spring[k] = Vec3{};  // released: the spring is dropped
+    P.touching[k] = 0;
+    return false;
+  }
+  P.touching[k] = 1;
+  const Vec3 mid = 0.5 * (c.pI + d + c.pJ);  // from the centre of i
+  const Vec3 leverI = mid, leverJ = mid - d;
+  const Vec3 vc = (s.v[i] + cross(s.w[i], leverI)) - (s.v[j] + cross(s.w[j], leverJ));
+  const ContactCoefficients& law = P.laws[P.law[k]];
+  const ContactForce f = contactForce(-c.n, overlap, vc, law, P.spring[k], dt);  // the normal towards i
+  noteOverlap(overlap / (2 * std::min(gi.smallestSemiAxis(), gj.smallestSemiAxis())), s.id[i], s.id[j]);
+  const Vec3 force = f.normal + f.tangential;
+  if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], -d, force);
+  s.force[i] += force;
+  s.torque[i] += cross(leverI, force);
+  s.force[j] -= force;
+  s.torque[j] -= cross(leverJ, force);
+  P.departure[k] = handOff_.pairState(s, i, j, handOff_.touchPair(s, i, j, overlap, law.kn), false);
+  return true;
 }
 
 // The walls of a non-sphere (particles/Shape.hpp): the contact at its surface point nearest the wall,

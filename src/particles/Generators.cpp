@@ -283,13 +283,16 @@ void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, do
   Vec3 lo{c.grid.lo[0], c.grid.lo[1], c.grid.lo[2]}, hi{c.grid.hi[0], c.grid.hi[1], c.grid.hi[2]};
   std::vector<Vec3> x(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
-    rmax = std::max(rmax, p[i].radius);
+    rmax = std::max(rmax, Shape{p[i].radius, p[i].aspect.value}.boundingRadius());
     x[i] = p[i].x;
   }
   CellBuckets buckets;
   buckets.build(x, x.size(), lo, hi, 2 * rmax);
   auto check = [&](const ParticleRecord& a, const ParticleRecord& b, const Vec3& shift) {
-    const double overlap = a.radius + b.radius - norm(a.x - (b.x + shift));
+    const Vec3 d = b.x + shift - a.x;
+    const double overlap = a.aspect.value == 1 && b.aspect.value == 1
+                             ? a.radius + b.radius - norm(d)
+                             : -closestPoints({a.radius, a.aspect.value}, a.q, {b.radius, b.aspect.value}, b.q, d, d).gap;
     if (overlap > maxOverlap * (a.radius + b.radius))
       failOption(option, "particles " + std::to_string(a.id) + " and " + std::to_string(b.id) + " overlap by " + formatNumber(overlap) +
                        " m, more than -particles_max_overlap " + formatNumber(maxOverlap) + " of their mean diameter");

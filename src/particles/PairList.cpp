@@ -21,7 +21,7 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
   c.reserve(first.size() + first.size() / 4 + 16);
   const double rough = contactLaw.roughness();
   buckets.forEachCandidate(s.nOwned, [&](std::size_t i, std::size_t j) {
-    const double range = (s.radius[i] + s.radius[j]) * (1 + rough) + lubricationGap + skin;
+    const double range = (s.bound[i] + s.bound[j]) * (1 + rough) + lubricationGap + skin;
     const Vec3 d = s.x[i] - s.x[j];
     if (dot(d, d) >= range * range) return;
     // Two fixed spheres interact only through lubrication of a prescribed motion (resistance studies).

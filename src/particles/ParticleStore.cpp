@@ -7,7 +7,7 @@ namespace vp {
 void ParticleStore::resize(std::size_t n)
 {
   forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto) { (this->*field).resize(n); });
-  for (auto* v : {&mass, &invMass, &invInertia}) v->resize(n);
+  for (auto* v : {&mass, &invMass, &invInertia, &bound}) v->resize(n);
   invInertiaBody.resize(n);
   xRebuild.resize(n);
   wallTouch.resize(n);
@@ -22,6 +22,7 @@ void ParticleStore::append(const ParticleRecord& r)
   // motion (at rest when none is given) that the fluid and the lubrication see.
   const Shape g = shape(i);
   const double m = g.mass(density[i]);
+  bound[i] = g.boundingRadius();
   mass[i] = m;
   invMass[i] = (r.flags & kFixed) ? 0 : 1 / m;
   if (g.sphere()) {
@@ -74,7 +75,7 @@ void ParticleStore::compactOwned(const std::vector<char>& keep)
       forEachParticleField<ParticleStore, ParticleRecord>([&](auto field, auto, const ParticleFieldInfo&, auto) {
         (this->*field)[k] = std::move((this->*field)[i]);
       });
-      mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i]; invInertiaBody[k] = invInertiaBody[i];
+      mass[k] = mass[i]; invMass[k] = invMass[i]; invInertia[k] = invInertia[i]; invInertiaBody[k] = invInertiaBody[i]; bound[k] = bound[i];
       xRebuild[k] = xRebuild[i]; wallTouch[k] = wallTouch[i];
     }
     ++k;

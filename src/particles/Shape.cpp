@@ -37,7 +37,75 @@ double ellipseDistance(double e0, double e1, double y0, double y1)
   return std::fabs(y0 - e0);
 }
 
+// An orthonormal pair t1, t2 normal to the unit n (t1 from the axis least aligned with n).
+void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2)
+{
+  const int d = std::fabs(n.x) <= std::fabs(n.y) && std::fabs(n.x) <= std::fabs(n.z) ? 0 : (std::fabs(n.y) <= std::fabs(n.z) ? 1 : 2);
+  Vec3 e;
+  e[d] = 1;
+  t1 = e - dot(e, n) * n;
+  t1 = t1 / norm(t1);
+  t2 = cross(n, t1);
+}
+
+Vec3 times(const Tensor3& A, const Vec3& v)
+{
+  return {A[0] * v.x + A[1] * v.y + A[2] * v.z, A[3] * v.x + A[4] * v.y + A[5] * v.z, A[6] * v.x + A[7] * v.y + A[8] * v.z};
+}
+
+// The body's support tensor in space, R diag(a^2, a^2, c^2) R^T: its extent along n is sqrt(n A n).
+Tensor3 supportTensor(const Shape& g, const Quaternion& q)
+{
+  const double c = g.c();
+  return rotatedTensor(Tensor3{g.a * g.a, 0, 0, 0, g.a * g.a, 0, 0, 0, c * c}, q);
+}
+
 } // namespace
+
+ClosestPoints closestPoints(const Shape& gi, const Quaternion& qi, const Shape& gj, const Quaternion& qj, const Vec3& d,
+                            const Vec3& guess)
+{
+  // The signed distance is the largest F(n) = n.d - h_i(n) - h_j(n) over unit n, h(n) = sqrt(n A n)
+  // the extents (support functions): separated, the gap between the supporting planes; overlapping,
+  // minus the smallest depth along any direction. Newton's method on the unit sphere, in the tangent
+  // plane: gradient P (d - A_i n / h_i - A_j n / h_j), Hessian P grad^2 F P - F P (F is homogeneous).
+  const Tensor3 Ai = supportTensor(gi, qi), Aj = supportTensor(gj, qj);
+  const double scale = gi.boundingRadius() + gj.boundingRadius() + norm(d);
+  Vec3 n = guess / norm(guess);
+  ClosestPoints out;
+  for (int it = 0; it < 100; ++it) {
+    const Vec3 ui = times(Ai, n), uj = times(Aj, n);
+    const double hi = std::sqrt(dot(n, ui)), hj = std::sqrt(dot(n, uj));
+    const Vec3 grad = d - ui / hi - uj / hj;
+    out = {n, dot(n, grad), ui / hi, -uj / hj};
+    Vec3 t[2];
+    tangentBasis(n, t[0], t[1]);
+    const double g0 = dot(t[0], grad), g1 = dot(t[1], grad);
+    if (std::hypot(g0, g1) <= 1e-14 * scale) break;
+    // t_a grad^2 F t_b - F delta_ab, grad^2 F = -sum (A/h - (A n)(A n)^T / h^3)
+    double H[2][2];
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        const Vec3 Ati = times(Ai, t[b]), Atj = times(Aj, t[b]);
+        H[a][b] = -(dot(t[a], Ati) / hi - dot(t[a], ui) * dot(t[b], ui) / (hi * hi * hi)) -
+                  (dot(t[a], Atj) / hj - dot(t[a], uj) * dot(t[b], uj) / (hj * hj * hj)) - (a == b ? out.gap : 0);
+      }
+    const double det = H[0][0] * H[1][1] - H[0][1] * H[1][0];
+    double s0, s1;
+    if (H[0][0] < 0 && det > 0) {  // a maximum ahead: Newton
+      s0 = -(H[1][1] * g0 - H[0][1] * g1) / det;
+      s1 = -(H[0][0] * g1 - H[1][0] * g0) / det;
+    } else {  // not yet near one: up the gradient, on the bodies' length scale
+      s0 = g0 / scale;
+      s1 = g1 / scale;
+    }
+    const double step = std::hypot(s0, s1);
+    if (step > 0.5) s0 *= 0.5 / step, s1 *= 0.5 / step;
+    n = n + s0 * t[0] + s1 * t[1];
+    n = n / norm(n);
+  }
+  return out;
+}
 
 Vec3 Shape::inertiaOverMass() const
 {
@@ -86,13 +154,8 @@ Tensor3 Shape::curvature(const Vec3& p) const
 
 std::array<double, 2> tangentEigenvalues(const Tensor3& K, const Vec3& n)
 {
-  // An orthonormal pair t1, t2 normal to n (t1 from the axis least aligned with n).
-  const int d = std::fabs(n.x) <= std::fabs(n.y) && std::fabs(n.x) <= std::fabs(n.z) ? 0 : (std::fabs(n.y) <= std::fabs(n.z) ? 1 : 2);
-  Vec3 e;
-  e[d] = 1;
-  Vec3 t1 = e - dot(e, n) * n;
-  t1 = t1 / norm(t1);
-  const Vec3 t2 = cross(n, t1);
+  Vec3 t1, t2;
+  tangentBasis(n, t1, t2);
   auto form = [&](const Vec3& u, const Vec3& v) {
     double s = 0;
     for (int i = 0; i < 3; ++i)

@@ -105,13 +105,15 @@ vp_bad_input(spheroid_axis 1 "option -particle_axis: must be a non-zero directio
 vp_bad_input(spheroid_aspect_of_sphere 1 "option -particle_aspect: needs -particle_shape spheroid" ${VP_SPHEROID} -particle_aspect 2)
 vp_bad_input(spheroid_generated 1 "option -particle_shape: spheroid applies to the single particle"
              -options_file ${VP_DEM_DATA}/box.opts -particles_lattice 0,0,0,0.04,0.04,0.04,0.01,0.002,0,1 -particle_shape spheroid)
-vp_bad_input(spheroid_pairs 1 "option -particles_file: a spheroid runs alone for now \\(contacts between spheroids are not implemented\\); got 2"
-             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv)
+vp_bad_input(spheroid_pair_lubrication 1 "option -lub_model: lubrication between a spheroid and another particle is not implemented"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv -lub_model llcm -lub_activation 0.05)
+vp_bad_input(spheroid_overlap 1 "option -particles_file: particles 0 and 1 overlap by"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids_overlap.csv)
 vp_bad_input(spheroid_sphere_aspect 1 "option -particles_file: .*line 2: a sphere has aspect 1"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/sphere_aspect.csv)
 vp_bad_input(spheroid_implicit_squeeze 1 "option -lub_integration: implicit is for spheres"
              ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -lub_model llcm -lub_activation 0.05 -lub_integration implicit)
-vp_bad_input(spheroid_thin 1 "option -particle_aspect: the spheroid's thickness 2 min\\(a, c\\) = 0.002 m spans less than two cells"
+vp_bad_input(spheroid_thin 1 "option -particle_aspect: the spheroid 0's thickness 2 min\\(a, c\\) = 0.002 m spans less than two cells"
              -grid_n 8,8,8 -grid_lo 0,0,0 -grid_hi 0.04,0.04,0.04 -particle_position 0.02,0.02,0.02 -particle_radius 0.004
              -particle_shape spheroid -particle_aspect 0.25)
 # The shipped Jeffery case to gamma t = 2 on 1 and 3 ranks: the axis turns as Jeffery's orbit says.

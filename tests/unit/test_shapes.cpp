@@ -304,3 +304,116 @@ TEST_CASE("DEM spheroid: the squeeze at a wall is that of the sphere with the ga
   CHECK(T.y == Approx(cross(low, F).y).epsilon(1e-3));
   CHECK(std::fabs(T.y) > 0.1 * a * F.z);
 }
+
+TEST_CASE("Shape: closest points of two spheroids against a search over a surface; overlaps separated by their depth", "[shape]")
+{
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> u;
+  auto unit = [&] {
+    Vec3 v{u(rng), u(rng), u(rng)};
+    return v / norm(v);
+  };
+  // Spheres: the closed form.
+  {
+    const Vec3 d{0.3, -0.1, 0.2};
+    const ClosestPoints c = closestPoints({0.1, 1}, {}, {0.15, 1}, alignedWith(unit()), d, d);
+    CHECK(c.gap == Approx(norm(d) - 0.25).margin(1e-15));
+    CHECK(norm(c.n - d / norm(d)) < 1e-15);
+  }
+  for (int trial = 0; trial < 24; ++trial) {
+    const Shape gi{1.0, trial % 3 == 0 ? 0.5 : 2.0}, gj{0.7, trial % 2 ? 3.0 : 1.0};
+    const Quaternion qi = alignedWith(unit()), qj = alignedWith(unit());
+    const Vec3 dir = unit();
+    // Separated by 0.05-0.5 along dir beyond touching: find the touching distance first.
+    const ClosestPoints touch0 = closestPoints(gi, qi, gj, qj, 10.0 * dir, dir);
+    const double clearance = trial < 16 ? 0.05 + 0.03 * trial : -0.02;  // the last eight overlap
+    const Vec3 d = 10.0 * dir + (clearance - touch0.gap) * touch0.n;
+    const ClosestPoints c = closestPoints(gi, qi, gj, qj, d, d);
+    INFO("trial " << trial << " gap " << c.gap);
+    // The points are on their surfaces, with normals n and -n, and apart by gap along n.
+    CHECK(gi.distance(toBody(qi, c.pI)) == Approx(0).margin(1e-10));
+    CHECK(gj.distance(toBody(qj, c.pJ)) == Approx(0).margin(1e-10));
+    const Vec3 sep = (d + c.pJ) - c.pI;
+    CHECK(norm(sep - c.gap * c.n) < 1e-9);
+    if (c.gap > 0) {
+      // Brute force: the nearest point of body j's surface to body i (exact distance), refined.
+      double best = HUGE_VAL, bt = 0, bp = 0;
+      auto dist = [&](double t, double p) {
+        const Vec3 body{gj.a * std::sin(t) * std::cos(p), gj.a * std::sin(t) * std::sin(p), gj.c() * std::cos(t)};
+        return gi.distance(toBody(qi, d + toSpace(qj, body)));
+      };
+      for (int i = 0; i <= 200; ++i)
+        for (int j = 0; j < 200; ++j) {
+          const double t = M_PI * i / 200, p = 2 * M_PI * j / 200, v = dist(t, p);
+          if (v < best) best = v, bt = t, bp = p;
+        }
+      for (double step = M_PI / 200; step > 1e-12; step *= 0.5)
+        for (int it = 0; it < 4; ++it)
+          for (int a = -1; a <= 1; ++a)
+            for (int b = -1; b <= 1; ++b) {
+              const double v = dist(bt + a * step, bp + b * step);
+              if (v < best) best = v, bt += a * step, bp += b * step;
+            }
+      CHECK(c.gap == Approx(best).margin(1e-8));
+    } else {
+      // Moved apart along n by the depth, the two just touch.
+      const ClosestPoints t = closestPoints(gi, qi, gj, qj, d - c.gap * c.n, c.n);
+      CHECK(t.gap == Approx(0).margin(1e-10));
+      CHECK(c.gap == Approx(-0.02).margin(1e-9));
+    }
+  }
+}
+
+TEST_CASE("DEM spheroids: an oblique, spinning, frictional collision conserves momentum and angular momentum; pole to pole bounces with e", "[shape][dem]")
+{
+  Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {4, 4, 4});
+  c.gravity = {0, 0, 0};
+  const double a = 0.02;
+  auto spheroid = [&](std::int64_t id, Vec3 x, double aspect, Vec3 axis, Vec3 v, Vec3 w = {}) {
+    ParticleRecord r = sphere(id, x, a, 2000, v, w);
+    r.aspect.value = aspect;
+    r.q = alignedWith(axis / norm(axis));
+    return r;
+  };
+  {
+    ParticleConfig pc = contactConfig(1e-3, 0.8, 0.4);
+    Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+    DemSolver dem(grid, c, resolved(c, pc),
+                  {spheroid(1, {0.45, 0.5, 0.5}, 2.5, {1, 1, 0.3}, {0.3, 0.02, -0.01}, {5, -10, 20}),
+                   spheroid(2, {0.55, 0.51, 0.505}, 0.5, {0.3, 0, 1}, {-0.2, 0, 0.01}, {-8, 3, 0})});
+    const ParticleStore& s = dem.particles();
+    auto momenta = [&](Vec3& P, Vec3& L) {
+      P = L = Vec3{};
+      for (std::size_t i = 0; i < s.nOwned; ++i) {
+        const Vec3 b = toBody(s.q[i], s.w[i]), k = s.invInertiaBody[i];
+        P += s.mass[i] * s.v[i];
+        L += cross(s.x[i], s.mass[i] * s.v[i]) + toSpace(s.q[i], Vec3{b.x / k.x, b.y / k.y, b.z / k.z});
+      }
+    };
+    Vec3 P0, L0, P, L;
+    momenta(P0, L0);
+    const double E0 = dem.diagnostics().kineticEnergy;
+    long contactSteps = 0;
+    for (int step = 0; step < 6000; ++step) {  // meet near 0.08 s
+      dem.advance(0, 1e-3 / 50);
+      contactSteps += dem.diagnostics().contacts;
+    }
+    momenta(P, L);
+    CHECK(contactSteps > 20);
+    CHECK(norm(P - P0) < 1e-13 * norm(P0));
+    CHECK(norm(L - L0) < 1e-11 * norm(L0));
+    CHECK(dem.diagnostics().kineticEnergy < E0);
+  }
+  {
+    // Pole to pole along x, axes aligned: a sphere's central impact, e of the law.
+    const double e = 0.7;
+    ParticleConfig pc = contactConfig(1e-3, e, 0.3);
+    Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+    DemSolver dem(grid, c, resolved(c, pc),
+                  {spheroid(1, {0.4, 0.5, 0.5}, 2, {1, 0, 0}, {0.5, 0, 0}), spheroid(2, {0.6, 0.5, 0.5}, 2, {1, 0, 0}, {-0.5, 0, 0})});
+    for (int step = 0; step < 8000; ++step) dem.advance(0, 1e-3 / 50);  // meet at 0.12 s, apart by 0.16 s
+    const ParticleStore& s = dem.particles();
+    CHECK((s.v[1].x - s.v[0].x) / 1.0 == Approx(e).epsilon(0.02));
+    CHECK(norm(s.w[0]) + norm(s.w[1]) < 1e-9);
+  }
+}

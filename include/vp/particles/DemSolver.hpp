@@ -94,6 +94,7 @@ private:
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
   int spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt);
+  bool shapedPair(std::size_t k, double dt);
   void checkShapes(const std::vector<ParticleRecord>& all) const;
   // m v^2 + w . I w of a non-sphere
   double twiceKinetic(std::size_t i) const;

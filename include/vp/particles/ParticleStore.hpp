@@ -30,6 +30,7 @@ struct ParticleStore {
   // bit f of wallTouch: wallSpring[f] may be non-zero.
   std::vector<double> mass, invMass, invInertia;
   std::vector<Vec3> invInertiaBody;
+  std::vector<double> bound;  // the bounding radius (Shape::boundingRadius)
   std::vector<Vec3> xRebuild;
   std::vector<std::uint8_t> wallTouch;
 

@@ -53,6 +53,18 @@ std::array<double, 2> tangentEigenvalues(const Tensor3& K, const Vec3& n);
 // 6 pi mu V R^2 / h0 with R^2 = 2 / ((k1 + k2) sqrt(k1 k2)) (spheres: the reduced radius squared).
 inline double squeezeRadiusSquared(double k1, double k2) { return 2 / ((k1 + k2) * std::sqrt(k1 * k2)); }
 
+// Two bodies' nearest points, or their deepest ones when they overlap: n the unit normal from body i
+// towards body j, gap the signed distance along it (< 0: the overlap depth), pI and pJ the points
+// relative to their centres (pI the point of i whose outward normal is n, pJ that of j with -n).
+// d = x_j - x_i; guess a unit direction to start from (the last normal, or d / abs(d)).
+struct ClosestPoints {
+  Vec3 n;
+  double gap = 0;
+  Vec3 pI, pJ;
+};
+ClosestPoints closestPoints(const Shape& gi, const Quaternion& qi, const Shape& gj, const Quaternion& qj, const Vec3& d,
+                            const Vec3& guess);
+
 // R K R^T, R the rotation of q: a body-frame tensor in space.
 Tensor3 rotatedTensor(const Tensor3& K, const Quaternion& q);
 
