@@ -9,13 +9,15 @@
   bounce: a spheroid (aspect 2, tilted 30 degrees) driven onto a wall as in cases/restitution.opts
         (steel in oil, St about 150 on the equal-volume diameter, d/dx 8 on 2a): dry, in the liquid
         without lubrication, and with the LLCM: rebound and spin (about 3 minutes)
-usage: shapes.py [drag|jeffery|bounce|all] [--res N] [--reuse]
+  settling: cases/spheroid_settling.opts, a prolate spheroid released at 45 degrees settling at
+        Re about 10: its tilt and speed until it lies on the bottom (about 30 seconds)
+usage: shapes.py [drag|jeffery|bounce|settling|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
 
-what = chosen_study(__doc__, ("drag", "jeffery", "bounce"), valued=("--res",))
+what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling"), valued=("--res",))
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
 reuse = "--reuse" in sys.argv
 RV = 0.126            # equal-volume radius (m) in the box of side 1
@@ -198,9 +200,43 @@ def bounce():
     fig.savefig(os.path.join(outdir, "spheroid_bounce.png"), dpi=120)
 
 
+def settling():
+    out = os.path.join(scratch, "vp_val_shape_settling")
+    if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-options_file", os.path.join(root, "cases", "spheroid_settling.opts"),
+                        "-output_dir", out, "-output_overwrite", "-monitor_every", "0", "-output_dt", "0"], check=True,
+                       stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
+    t = [float(r["time"]) for r in rows]
+    tilt = []
+    for r in rows:
+        w, x, y, z = (float(r[k]) for k in ("qw", "qx", "qy", "qz"))
+        tilt.append(math.degrees(math.acos(min(1.0, abs(1 - 2 * (x * x + y * y))))))
+    speed = [-float(r["vz"]) for r in rows]
+    top = max(speed)
+    k80 = next((k for k, a in enumerate(tilt) if a > 80), None)
+    dv = 2 * 0.001 * 2 ** (1 / 3)
+    print("settling: largest speed %.4f m/s (Re %.1f on d_v), axis past 80 degrees at t = %s s, %.1f degrees at the largest speed; "
+          "at the end z = %.2f mm, tilt %.1f degrees" % (top, top * dv * 1000 / 0.02, "%.3f" % t[k80] if k80 is not None else "never",
+                                                        tilt[speed.index(top)], 1000 * float(rows[-1]["z"]), tilt[-1]), flush=True)
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    ax.plot(t, tilt, label="axis from the vertical (deg)")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("tilt (deg)")
+    ax2 = ax.twinx()
+    ax2.plot(t, speed, "C1", label="settling speed")
+    ax2.set_ylabel("settling speed (m/s)", color="C1")
+    ax.set_title("Prolate spheroid (aspect 2) settling at Re about 10", fontsize=10)
+    ax.legend(loc="lower right", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "spheroid_settling.png"), dpi=120)
+
+
 if what in ("drag", "all"):
     drag()
 if what in ("jeffery", "all"):
     jeffery()
 if what in ("bounce", "all"):
     bounce()
+if what in ("settling", "all"):
+    settling()

@@ -120,6 +120,10 @@ vp_bad_input(spheroid_thin 1 "option -particle_aspect: the spheroid 0's thicknes
 add_test(NAME case_jeffery_start COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_jeffery_start.py $<TARGET_FILE:vpsolve>
          ${VP_CASES}/jeffery_orbit.opts ${CMAKE_CURRENT_BINARY_DIR}/case_jeffery_start)
 set_tests_properties(case_jeffery_start PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 600)
+# The shipped settling spheroid to t = 0.25 s: it turns broadside on and settles steadily.
+add_test(NAME case_spheroid_settling COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spheroid_settling.py $<TARGET_FILE:vpsolve>
+         ${VP_CASES}/spheroid_settling.opts ${CMAKE_CURRENT_BINARY_DIR}/case_spheroid_settling)
+set_tests_properties(case_spheroid_settling PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 300)
 
 # Time-series rows every -series_every steps and at the last step.
 vp_case_run(series_every 2 --steps 10,20,25 -- $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
