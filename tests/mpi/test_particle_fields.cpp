@@ -101,6 +101,7 @@ std::string mismatches(const ParticleRecord& got, const ParticleRecord& want, co
 ParticleRecord expected(std::int64_t id, Vec3 x, int round)
 {
   ParticleRecord r = sphere(id, x, 0.01, 1000 + id);
+  r.aspect.value = 1.5 + 0.01 * id;  // a spheroid's: distinct from the default a dropped field would read as
   setFields(r, 0);
   if (round) setFields(r, 1);
   return r;
