@@ -116,20 +116,17 @@ TEST_CASE("Spheroid contacts across rank boundaries equal the one-rank result", 
   c.gravity = {0, 0, -9.81};
   ParticleConfig pc = contactConfig(0.01, 0.8, 0.3);
   const double a = 0.04;
-  auto spheroid = [&](std::int64_t id, Vec3 x, double aspect, Vec3 axis, Vec3 v, Vec3 w = {}) {
-    ParticleRecord r = sphere(id, x, a, 2000, v, w);
-    r.aspect.value = aspect;
-    r.q = alignedWith(axis / norm(axis));
-    return r;
+  auto body = [&](std::int64_t id, Vec3 x, double aspect, Vec3 axis, Vec3 v, Vec3 w = {}) {
+    return spheroid(id, x, a, aspect, axis, 2000, v, w);
   };
   std::vector<ParticleRecord> p = {
     // Prolate against oblate around x = 1/3, off-centre and spinning; a prolate against a sphere
     // around x = 2/3; a tilted prolate falling onto the floor and sliding across the boundaries.
-    spheroid(1, {1.0 / 3 - 0.09, 0.15, 0.25}, 2, {1, 0.3, 0.2}, {0.3, 0, 0.05}, {0, 4, 0}),
-    spheroid(2, {1.0 / 3 + 0.07, 0.18, 0.27}, 0.5, {0.2, 0, 1}, {-0.2, 0, 0}),
-    spheroid(3, {2.0 / 3 - 0.1, 0.2, 0.2}, 2, {0.6, 0.6, 0.5}, {0.3, 0, 0.1}, {5, 0, -3}),
+    body(1, {1.0 / 3 - 0.09, 0.15, 0.25}, 2, {1, 0.3, 0.2}, {0.3, 0, 0.05}, {0, 4, 0}),
+    body(2, {1.0 / 3 + 0.07, 0.18, 0.27}, 0.5, {0.2, 0, 1}, {-0.2, 0, 0}),
+    body(3, {2.0 / 3 - 0.1, 0.2, 0.2}, 2, {0.6, 0.6, 0.5}, {0.3, 0, 0.1}, {5, 0, -3}),
     sphere(4, {2.0 / 3 + 0.06, 0.21, 0.2}, a, 2000, {-0.1, 0, 0}),
-    spheroid(5, {0.1, 0.3, 0.12}, 2, {1, 0, 1}, {2.0, 0, 0}),
+    body(5, {0.1, 0.3, 0.12}, 2, {1, 0, 1}, {2.0, 0, 0}),
   };
   const double dt = 0.01 / 50;
   long contactSteps = 0;

@@ -62,6 +62,15 @@ inline ParticleRecord sphere(std::int64_t id, Vec3 x, double radius, double dens
   return r;
 }
 
+// A spheroid of equatorial semi-axis a and aspect c/a, its symmetry axis along `axis`.
+inline ParticleRecord spheroid(std::int64_t id, Vec3 x, double a, double aspect, Vec3 axis, double density, Vec3 v = {}, Vec3 w = {})
+{
+  ParticleRecord r = sphere(id, x, a, density, v, w);
+  r.aspect.value = aspect;
+  r.q = alignedWith(axis / norm(axis));
+  return r;
+}
+
 // The owned particles of all ranks, on every rank, sorted by id.
 struct State {
   std::int64_t id;

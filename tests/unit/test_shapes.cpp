@@ -369,18 +369,15 @@ TEST_CASE("DEM spheroids: an oblique, spinning, frictional collision conserves m
   Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {4, 4, 4});
   c.gravity = {0, 0, 0};
   const double a = 0.02;
-  auto spheroid = [&](std::int64_t id, Vec3 x, double aspect, Vec3 axis, Vec3 v, Vec3 w = {}) {
-    ParticleRecord r = sphere(id, x, a, 2000, v, w);
-    r.aspect.value = aspect;
-    r.q = alignedWith(axis / norm(axis));
-    return r;
+  auto body = [&](std::int64_t id, Vec3 x, double aspect, Vec3 axis, Vec3 v, Vec3 w = {}) {
+    return spheroid(id, x, a, aspect, axis, 2000, v, w);
   };
   {
     ParticleConfig pc = contactConfig(1e-3, 0.8, 0.4);
     Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
     DemSolver dem(grid, c, resolved(c, pc),
-                  {spheroid(1, {0.45, 0.5, 0.5}, 2.5, {1, 1, 0.3}, {0.3, 0.02, -0.01}, {5, -10, 20}),
-                   spheroid(2, {0.55, 0.51, 0.505}, 0.5, {0.3, 0, 1}, {-0.2, 0, 0.01}, {-8, 3, 0})});
+                  {body(1, {0.45, 0.5, 0.5}, 2.5, {1, 1, 0.3}, {0.3, 0.02, -0.01}, {5, -10, 20}),
+                   body(2, {0.55, 0.51, 0.505}, 0.5, {0.3, 0, 1}, {-0.2, 0, 0.01}, {-8, 3, 0})});
     const ParticleStore& s = dem.particles();
     auto momenta = [&](Vec3& P, Vec3& L) {
       P = L = Vec3{};
@@ -410,7 +407,7 @@ TEST_CASE("DEM spheroids: an oblique, spinning, frictional collision conserves m
     ParticleConfig pc = contactConfig(1e-3, e, 0.3);
     Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
     DemSolver dem(grid, c, resolved(c, pc),
-                  {spheroid(1, {0.4, 0.5, 0.5}, 2, {1, 0, 0}, {0.5, 0, 0}), spheroid(2, {0.6, 0.5, 0.5}, 2, {1, 0, 0}, {-0.5, 0, 0})});
+                  {body(1, {0.4, 0.5, 0.5}, 2, {1, 0, 0}, {0.5, 0, 0}), body(2, {0.6, 0.5, 0.5}, 2, {1, 0, 0}, {-0.5, 0, 0})});
     for (int step = 0; step < 8000; ++step) dem.advance(0, 1e-3 / 50);  // meet at 0.12 s, apart by 0.16 s
     const ParticleStore& s = dem.particles();
     CHECK((s.v[1].x - s.v[0].x) / 1.0 == Approx(e).epsilon(0.02));
