@@ -19,7 +19,7 @@ double TimeStepControl::particleRate(const DemSolver* dem, MPI_Comm comm) const
   const ParticleStore& s = dem->particles();
   double rate = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i)
-    for (int c = 0; c < 3; ++c) rate = std::max(rate, (std::fabs(s.v[i][c]) + norm(s.w[i]) * s.shape(i).boundingRadius()) / h_[c]);
+    for (int c = 0; c < 3; ++c) rate = std::max(rate, (std::fabs(s.v[i][c]) + norm(s.w[i]) * s.bound[i]) / h_[c]);
   double global = 0;
   MPI_Allreduce(&rate, &global, 1, MPI_DOUBLE, MPI_MAX, comm);
   return global;

@@ -134,7 +134,7 @@ void Penalization::build(const ParticleStore& s, double dt, double lambdaFloor)
     const Vec3 X = s.x[p];
     const Shape shape = s.shape(p);
     const bool round = shape.sphere();
-    const double a = shape.boundingRadius(), reach = a + eps, reach2 = reach * reach;
+    const double a = s.bound[p], reach = a + eps, reach2 = reach * reach;
     // Owned faces of component c within reach of the centre, box[c] (face c sits at index i along
     // c); the three components are visited together, cell by cell, as they lie in memory.
     PetscInt lo[3][3], hi[3][3], ulo[3], uhi[3];
