@@ -20,6 +20,22 @@ ContactLaw makeLaw(const Config& c, const ParticleConfig& pc)
   return ContactLaw(pc.contact, c.time.dt);
 }
 
+// The gap of a non-sphere with squeeze radius^2 R2 (particles/Shape.hpp) as the lubrication model
+// sees it: a sphere of radius sqrt(R2) at a wall has the same squeeze. The normal velocities of
+// the two surface points alone: the correction is the squeeze (docs/shapes.md).
+PairState squeezeState(const Vec3& n, double gap, double R2, const Vec3& vI, const Vec3& vJ, double mu)
+{
+  PairState st;
+  st.normal = n;
+  st.gap = gap;
+  st.radiusI = std::sqrt(R2);
+  st.radiusJ = kWallRadius;
+  st.velocityI = dot(vI, n) * n;
+  st.velocityJ = dot(vJ, n) * n;
+  st.viscosity = mu;
+  return st;
+}
+
 } // namespace
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc)
@@ -84,15 +100,14 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   if (!restart) computeForces(0);
 }
 
-// What the non-spheres can do so far (docs/shapes.md): contacts with walls and with any particle,
-// the squeeze at walls (explicit) but no lubrication between particles, resolved by the grid.
+// What the non-spheres can do so far (docs/shapes.md): contacts and the explicit squeeze, with walls
+// and with any particle.
 void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
 {
-  if (lub_.model != LubModel::None && all.size() > 1)
-    failOption("-lub_model", "lubrication between a spheroid and another particle is not implemented: with spheroids, use it "
-                             "for one particle (at walls) or -lub_model none; got " + std::to_string(all.size()) + " particles");
   if (lub_.model != LubModel::None && lub_.implicitSqueeze)
-    failOption("-lub_integration", "implicit is for spheres: a spheroid's squeeze at a wall is explicit (use explicit)");
+    failOption("-lub_integration", "implicit is for spheres: the squeeze of a spheroid is explicit (use explicit)");
+  if (lub_.model != LubModel::None && lub_.inertia)
+    failOption("-lub_inertia", "the film's inertia is that of a sphere at a wall: not for spheroids (drop the option)");
   const double h = std::max({grid_.h(0), grid_.h(1), grid_.h(2)});
   for (const ParticleRecord& r : all) {
     const Shape g{r.radius, r.aspect.value};
@@ -330,8 +345,9 @@ void DemSolver::computeForces(double dt)
 // A pair with a non-sphere (particles/Shape.hpp): the contact at the bodies' deepest points
 // (closestPoints), at the spheres' gap (roughness x the sum of the equatorial radii), the spring-
 // dashpot and Coulomb law of spheres along the common normal, acting at the midpoint of the two
-// points on each body's lever. No rolling resistance, no lubrication (checkShapes). Returns whether
-// the pair touches.
+// points on each body's lever; no rolling resistance. Apart, the squeeze of the lubrication model,
+// geometry-free: R^2 from the two surfaces' curvatures at their nearest points, at the gap between
+// them, acting at the midpoint (docs/shapes.md). Returns whether the pair touches.
 bool DemSolver::shapedPair(std::size_t k, double dt)
 {
   ParticleStore& s = store_;
@@ -340,28 +356,46 @@ bool DemSolver::shapedPair(std::size_t k, double dt)
   const Shape gi = s.shape(i), gj = s.shape(j);
   const Vec3 d = s.x[j] - s.x[i];
   const ClosestPoints c = closestPoints(gi, s.q[i], gj, s.q[j], d, d);
-  const double overlap = law_.roughnessGap(gi.a, gj.a) - c.gap;
-  P.departure[k] = 0;
-  if (overlap <= 0) {
-    P.spring[k] = Vec3{};  // released: the spring is dropped
-    P.touching[k] = 0;
-    return false;
-  }
-  P.touching[k] = 1;
+  const double contactGap = law_.roughnessGap(gi.a, gj.a);
+  const double overlap = contactGap - c.gap;
   const Vec3 mid = 0.5 * (c.pI + d + c.pJ);  // from the centre of i
   const Vec3 leverI = mid, leverJ = mid - d;
-  const Vec3 vc = (s.v[i] + cross(s.w[i], leverI)) - (s.v[j] + cross(s.w[j], leverJ));
-  const ContactCoefficients& law = P.laws[P.law[k]];
-  const ContactForce f = contactForce(-c.n, overlap, vc, law, P.spring[k], dt);  // the normal towards i
-  noteOverlap(overlap / (2 * std::min(gi.smallestSemiAxis(), gj.smallestSemiAxis())), s.id[i], s.id[j]);
-  const Vec3 force = f.normal + f.tangential;
-  if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], -d, force);
+  const Vec3 vI = s.v[i] + cross(s.w[i], leverI), vJ = s.v[j] + cross(s.w[j], leverJ);
+  Vec3 force;
+  bool touching = overlap > 0;
+  if (touching) {
+    P.touching[k] = 1;
+    const ContactCoefficients& law = P.laws[P.law[k]];
+    const ContactForce f = contactForce(-c.n, overlap, vI - vJ, law, P.spring[k], dt);  // the normal towards i
+    noteOverlap(overlap / (2 * std::min(gi.smallestSemiAxis(), gj.smallestSemiAxis())), s.id[i], s.id[j]);
+    force = f.normal + f.tangential;
+    if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], -d, force);
+    P.departure[k] = handOff_.pairState(s, i, j, handOff_.touchPair(s, i, j, overlap, law.kn), false);
+  } else {
+    P.spring[k] = Vec3{};  // released: the spring is dropped
+    P.touching[k] = 0;
+    const double scale = std::min(gi.a, gj.a);
+    const bool leaving = handOff_.pairLeaving(s, i, j, -c.n, c.gap, P.departure[k]);
+    if (lub_.model == LubModel::None || !(c.gap < lub_.activationGap(scale) || leaving)) {
+      P.departure[k] = 0;
+      return false;
+    }
+    P.departure[k] = handOff_.pairState(s, i, j, 0, leaving);
+    Tensor3 K = rotatedTensor(gi.curvature(toBody(s.q[i], c.pI)), s.q[i]);
+    const Tensor3 Kj = rotatedTensor(gj.curvature(toBody(s.q[j], c.pJ)), s.q[j]);
+    for (int m = 0; m < 9; ++m) K[m] += Kj[m];
+    const std::array<double, 2> kk = tangentEigenvalues(K, c.n);
+    const PairState st = squeezeState(c.n, c.gap, squeezeRadiusSquared(kk[0], kk[1]), vI, vJ, mu_);
+    const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, scale) : lub_;
+    force = lubricationForce(film, st, contactGap, scale).forceI;
+    if (lubWatch_) watchLubrication(st, contactGap, s.invMass[i] + s.invMass[j]);
+    if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], -d, force);
+  }
   s.force[i] += force;
   s.torque[i] += cross(leverI, force);
   s.force[j] -= force;
   s.torque[j] -= cross(leverJ, force);
-  P.departure[k] = handOff_.pairState(s, i, j, handOff_.touchPair(s, i, j, overlap, law.kn), false);
-  return true;
+  return touching;
 }
 
 // The walls of a non-sphere (particles/Shape.hpp): the contact at its surface point nearest the wall,
@@ -408,14 +442,7 @@ int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
       if (overlap <= 0 && lubricated && (gap < lubReach || leaving)) {
         const Vec3 p = g.pointWithNormal(towardWall), lever = toSpace(s.q[i], p);
         const std::array<double, 2> k = tangentEigenvalues(g.curvature(p), towardWall);
-        PairState st;
-        st.normal = -n;
-        st.gap = gap;
-        st.radiusI = std::sqrt(squeezeRadiusSquared(k[0], k[1]));
-        st.radiusJ = kWallRadius;
-        st.velocityI = dot(s.v[i] + cross(s.w[i], lever), n) * n;  // the squeeze alone
-        st.velocityJ = dot(wall.velocity, n) * n;
-        st.viscosity = mu_;
+        PairState st = squeezeState(-n, gap, squeezeRadiusSquared(k[0], k[1]), s.v[i] + cross(s.w[i], lever), wall.velocity, mu_);
         st.slipWall = wall.slip;
         const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, g.a) : lub_;
         const Vec3 squeeze = lubricationForce(film, st, reachBeyond, g.a).forceI;
@@ -626,18 +653,7 @@ void DemSolver::addSqueezeStress()
 
 double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
 {
-  if (shaped_) {
-    // One spheroid (checkShapes): its squeeze at a wall with the larger R^2 of its pole (a^4 / c^2)
-    // and its equator (curvatures 1/a and a/c^2); BLCM's resistance, which bounds LLCM's.
-    const ParticleRecord& r = all[0];
-    const Shape g{r.radius, r.aspect.value};
-    if (activeWalls_.empty() || (r.flags & kFixed)) return 0;
-    const double a = g.a, c = g.c();
-    const double R2 = std::max(a * a * a * a / (c * c), squeezeRadiusSquared(1 / a, a / (c * c)));
-    const double h = std::max(lub_.saturation * a, law_.roughnessGap(a, 0));
-    const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));
-    return 6 * M_PI * mu_ * R2 * (1 / h - 1 / hAct) / g.mass(r.density);
-  }
+  if (shaped_) return shapedLubricationRate(all);
   // Particle classes (radius, inverse mass): the pair rate c (1/m_i + 1/m_j) over all class pairs.
   std::vector<std::pair<double, double>> classes;
   for (const ParticleRecord& r : all) {
@@ -667,6 +683,37 @@ double DemSolver::lubricationRate(const std::vector<ParticleRecord>& all) const
       for (const auto& [aj, invMassJ] : classes) rate = std::max(rate, resistance(ai, aj) * (invMassI + invMassJ));
   }
   return rate;
+}
+
+// With non-spheres: the squeeze resistance of BLCM (which bounds LLCM's) at the largest R^2 each
+// pair of shape classes can meet with (largestSqueezeRadiusSquared), at its smallest gap.
+double DemSolver::shapedLubricationRate(const std::vector<ParticleRecord>& all) const
+{
+  struct ShapeClass {
+    Shape g;
+    double invMass;
+    bool operator==(const ShapeClass& o) const { return g.a == o.g.a && g.aspect == o.g.aspect && invMass == o.invMass; }
+  };
+  std::vector<ShapeClass> classes;
+  for (const ParticleRecord& r : all) {
+    const Shape g{r.radius, r.aspect.value};
+    const ShapeClass k{g, (r.flags & kFixed) ? 0 : 1 / g.mass(r.density)};
+    if (std::find(classes.begin(), classes.end(), k) == classes.end()) classes.push_back(k);
+  }
+  auto rate = [&](const ShapeClass& i, const ShapeClass* j) {
+    const double a = j ? std::min(i.g.a, j->g.a) : i.g.a;
+    const double h = std::max(lub_.saturation * a, law_.roughnessGap(i.g.a, j ? j->g.a : 0));
+    const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));
+    if (!(h < hAct)) return 0.0;
+    const double R2 = largestSqueezeRadiusSquared(i.g, j ? &j->g : nullptr);
+    return 6 * M_PI * mu_ * R2 * (1 / h - 1 / hAct) * (i.invMass + (j ? j->invMass : 0));
+  };
+  double worst = 0;
+  for (std::size_t m = 0; m < classes.size(); ++m) {
+    if (!activeWalls_.empty()) worst = std::max(worst, rate(classes[m], nullptr));
+    for (std::size_t n = m; n < classes.size() && all.size() > 1; ++n) worst = std::max(worst, rate(classes[m], &classes[n]));
+  }
+  return worst;
 }
 
 long DemSolver::requiredSubsteps(double dtp) const

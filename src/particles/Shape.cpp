@@ -167,6 +167,13 @@ std::array<double, 2> tangentEigenvalues(const Tensor3& K, const Vec3& n)
   return {mean - half, mean + half};
 }
 
+double largestSqueezeRadiusSquared(const Shape& gi, const Shape* gj)
+{
+  const double H = gi.leastMeanCurvature() + (gj ? gj->leastMeanCurvature() : 0);
+  const double rootK = gi.leastRootGaussCurvature() + (gj ? gj->leastRootGaussCurvature() : 0);
+  return 1 / (H * rootK);
+}
+
 Tensor3 rotatedTensor(const Tensor3& K, const Quaternion& q)
 {
   Vec3 col[3];  // R's columns: the body axes in space

@@ -105,8 +105,8 @@ vp_bad_input(spheroid_axis 1 "option -particle_axis: must be a non-zero directio
 vp_bad_input(spheroid_aspect_of_sphere 1 "option -particle_aspect: needs -particle_shape spheroid" ${VP_SPHEROID} -particle_aspect 2)
 vp_bad_input(spheroid_generated 1 "option -particle_shape: spheroid applies to the single particle"
              -options_file ${VP_DEM_DATA}/box.opts -particles_lattice 0,0,0,0.04,0.04,0.04,0.01,0.002,0,1 -particle_shape spheroid)
-vp_bad_input(spheroid_pair_lubrication 1 "option -lub_model: lubrication between a spheroid and another particle is not implemented"
-             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv -lub_model llcm -lub_activation 0.05)
+vp_bad_input(spheroid_lub_inertia 1 "option -lub_inertia: the film's inertia is that of a sphere at a wall: not for spheroids"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv -lub_model llcm -lub_activation 0.05 -lub_inertia)
 vp_bad_input(spheroid_overlap 1 "option -particles_file: particles 0 and 1 overlap by"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids_overlap.csv)
 vp_bad_input(spheroid_sphere_aspect 1 "option -particles_file: .*line 2: a sphere has aspect 1"

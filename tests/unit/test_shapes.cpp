@@ -158,6 +158,48 @@ TEST_CASE("Shape: squeeze radius of two spheroids' gap at the values of lubricat
   CHECK(wall(0.5, {0, 0, 1}) == Approx(4.0).epsilon(1e-12));
 }
 
+TEST_CASE("Shape: the largest squeeze radius bounds that of any two bodies' nearest points; spheres, poles and equators meet it", "[shape][lub]")
+{
+  // The least mean curvature and Gaussian curvature over the surface, against a sampling of it.
+  for (double aspect : {0.4, 1.0, 2.0, 3.0}) {
+    const Shape g{1.0, aspect};
+    double H = HUGE_VAL, rootK = HUGE_VAL;
+    for (int i = 0; i <= 400; ++i) {
+      const Vec3 p = surfacePoint(g, M_PI * i / 400, 0.3);
+      const Vec3 n = Vec3{p.x, p.y, p.z / (aspect * aspect)} / norm(Vec3{p.x, p.y, p.z / (aspect * aspect)});
+      const std::array<double, 2> k = tangentEigenvalues(g.curvature(p), n);
+      H = std::min(H, 0.5 * (k[0] + k[1]));
+      rootK = std::min(rootK, std::sqrt(k[0] * k[1]));
+    }
+    CHECK(H == Approx(g.leastMeanCurvature()).epsilon(1e-9));
+    CHECK(rootK == Approx(g.leastRootGaussCurvature()).epsilon(1e-9));
+  }
+  // The bound against the squeeze radius of random pairs at their nearest points.
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> u;
+  auto unit = [&] {
+    Vec3 v{u(rng), u(rng), u(rng)};
+    return v / norm(v);
+  };
+  const Shape shapes[] = {{1.0, 2.0}, {0.8, 0.5}, {0.7, 1.0}, {1.2, 3.0}};
+  for (int trial = 0; trial < 200; ++trial) {
+    const Shape gi = shapes[trial % 4], gj = shapes[(trial / 4) % 4];
+    const Quaternion qi = alignedWith(unit()), qj = alignedWith(unit());
+    const Vec3 d = 5.0 * unit();
+    const ClosestPoints c = closestPoints(gi, qi, gj, qj, d, d);
+    Tensor3 K = rotatedTensor(gi.curvature(toBody(qi, c.pI)), qi);
+    const Tensor3 Kj = rotatedTensor(gj.curvature(toBody(qj, c.pJ)), qj);
+    for (int m = 0; m < 9; ++m) K[m] += Kj[m];
+    const std::array<double, 2> k = tangentEigenvalues(K, c.n);
+    CHECK(squeezeRadiusSquared(k[0], k[1]) <= largestSqueezeRadiusSquared(gi, &gj) * (1 + 1e-12));
+  }
+  const Shape sphereI{1.0, 1}, sphereJ{0.7, 1}, prolate{1.0, 2}, oblate{1.0, 0.5};
+  CHECK(largestSqueezeRadiusSquared(sphereI, &sphereJ) == Approx(std::pow(0.7 / 1.7, 2)).epsilon(1e-12));
+  CHECK(largestSqueezeRadiusSquared(prolate, nullptr) == Approx(3.2).epsilon(1e-12));  // equator at a wall
+  CHECK(largestSqueezeRadiusSquared(oblate, nullptr) == Approx(4.0).epsilon(1e-12));   // pole at a wall
+  CHECK(largestSqueezeRadiusSquared(prolate, &prolate) == Approx(0.8).epsilon(1e-12));  // equators, axes parallel
+}
+
 TEST_CASE("Quaternion: alignedWith takes the body z axis onto the axis; toBody undoes toSpace", "[shape]")
 {
   for (Vec3 axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, -1}, Vec3{0.6, -0.48, 0.64}}) {
@@ -303,6 +345,53 @@ TEST_CASE("DEM spheroid: the squeeze at a wall is that of the sphere with the ga
   CHECK(F.z < expected(3.2 * a * a));
   CHECK(T.y == Approx(cross(low, F).y).epsilon(1e-3));
   CHECK(std::fabs(T.y) > 0.1 * a * F.z);
+}
+
+TEST_CASE("DEM spheroids: the squeeze between two is that of their gap's curvatures, equal and opposite, at the nearest points", "[shape][dem][lub]")
+{
+  // Body i (a = 1 cm) moving at 1 cm/s towards body j at rest, at the gap h = 0.05 a between their
+  // nearest points; BLCM squeeze from the activation gap 0.5 a: F = 6 pi mu R^2 V (1/h - 1/h_act).
+  Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {4, 4, 4});
+  c.fluid.mu = 1e-3;
+  c.gravity = {0, 0, 0};
+  const double a = 0.01, V = 0.01, h = 0.05 * a, hAct = 0.5 * a, mu = 1e-3;
+  struct Result {
+    Vec3 F, Fj, Ti, Tj, xi, xj, n;
+  };
+  auto run = [&](const Shape& gi, const Vec3& axisI, const Shape& gj, const Vec3& axisJ, const Vec3& dir) {
+    const Quaternion qi = alignedWith(axisI / norm(axisI)), qj = alignedWith(axisJ / norm(axisJ));
+    const Vec3 xi{0.5, 0.5, 0.5};
+    const ClosestPoints far = closestPoints(gi, qi, gj, qj, dir, dir);
+    const Vec3 xj = xi + dir + (h - far.gap) * far.n;
+    const ClosestPoints near = closestPoints(gi, qi, gj, qj, xj - xi, far.n);
+    ParticleConfig pc = lubricatedConfig(1e-3, 0.9, 1e-3, LubModel::Blcm, 0.5);
+    Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+    DemSolver dem(grid, c, resolved(c, pc),
+                  {spheroid(0, xi, gi.a, gi.aspect, axisI, 1000, V * near.n), spheroid(1, xj, gj.a, gj.aspect, axisJ, 1000)});
+    const ParticleStore& s = dem.particles();
+    return Result{s.force[0], s.force[1], s.torque[0], s.torque[1], s.x[0], s.x[1], near.n};
+  };
+  auto expected = [&](double R2, double smaller = 1) { return 6 * M_PI * mu * R2 * V * (1 / h - 1 / (hAct * smaller)); };
+  const Shape prolate{a, 2}, ball{0.7 * a, 1};
+  // Equator to equator, axes parallel: R^2 = 0.80 a^2, along the line of centres, no torque.
+  Result r = run(prolate, {0, 0, 1}, prolate, {0, 0, 1}, {0.05, 0, 0});
+  CHECK(-r.F.x == Approx(expected(0.80 * a * a)).epsilon(1e-9));
+  CHECK(norm(r.Ti) + norm(r.Tj) < 1e-12 * norm(r.F) * a);
+  // Pole to pole: R^2 = a^4 / (4 c^2) = 0.0625 a^2.
+  r = run(prolate, {1, 0, 0}, prolate, {1, 0, 0}, {0.05, 0, 0});
+  CHECK(-r.F.x == Approx(expected(0.0625 * a * a)).epsilon(1e-9));
+  // A spheroid's equator against a sphere: the curvatures 1/a + 1/b and a/c^2 + 1/b (b = 0.7 a); the
+  // activation gap is that of the smaller equatorial radius, b.
+  r = run(prolate, {0, 0, 1}, ball, {0, 0, 1}, {0.05, 0, 0});
+  CHECK(-r.F.x == Approx(expected(squeezeRadiusSquared(1 / a + 1 / (0.7 * a), 0.25 / a + 1 / (0.7 * a)), 0.7)).epsilon(1e-9));
+  // Tilted bodies, off the line of centres: equal and opposite along the common normal, and the pair
+  // exerts no net torque about any point (the two forces act at one point).
+  r = run(prolate, {1, 0.3, 0.5}, Shape{0.8 * a, 0.5}, {0.2, 1, -0.4}, {0.03, 0.02, -0.01});
+  CHECK(norm(r.F + r.Fj) < 1e-14 * norm(r.F));
+  CHECK(norm(cross(r.F, r.n)) < 1e-12 * norm(r.F));
+  CHECK(dot(r.F, r.n) < -expected(0.0625 * a * a, 0.8));
+  CHECK(norm(r.Ti + r.Tj + cross(r.xi, r.F) + cross(r.xj, r.Fj)) < 1e-12 * norm(r.F) * norm(r.xi));
+  CHECK(norm(r.Ti) > 0.01 * norm(r.F) * a);
 }
 
 TEST_CASE("Shape: closest points of two spheroids against a search over a surface; overlaps separated by their depth", "[shape]")

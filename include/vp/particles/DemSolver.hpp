@@ -101,6 +101,7 @@ private:
   // Largest c (1/m_i + 1/m_j) of the saturated normal lubrication over the particle classes of
   // `all` and the walls [1/s].
   double lubricationRate(const std::vector<ParticleRecord>& all) const;
+  double shapedLubricationRate(const std::vector<ParticleRecord>& all) const;
   // Sub-steps per fluid step that keep the saturated lubrication stable at sub-step dtp.
   long requiredSubsteps(double dtp) const;
   // With a sub-step beyond the bound: the largest c (1/m_i + 1/m_j) a lubricating pair reaches

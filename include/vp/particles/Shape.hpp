@@ -42,6 +42,10 @@ struct Shape {
   // Curvature tensor (shape operator) at the surface point p: its two non-zero eigenvalues are the
   // principal curvatures, in the tangent plane; n (x) n is its null space.
   Tensor3 curvature(const Vec3& p) const;
+  // The least mean curvature (k1 + k2) / 2 and the least square root of the Gaussian curvature
+  // sqrt(k1 k2) over the surface: a prolate body's equator, an oblate one's pole.
+  double leastMeanCurvature() const { return aspect > 1 ? 0.5 * (1 / a + a / (c() * c())) : c() / (a * a); }
+  double leastRootGaussCurvature() const { return aspect > 1 ? 1 / c() : c() / (a * a); }
 };
 
 // The two eigenvalues of the symmetric tensor K restricted to the plane normal to the unit n
@@ -52,6 +56,13 @@ std::array<double, 2> tangentEigenvalues(const Tensor3& K, const Vec3& n);
 // Lubrication theory on the gap h0 + k1 x^2 / 2 + k2 y^2 / 2: the squeeze force is
 // 6 pi mu V R^2 / h0 with R^2 = 2 / ((k1 + k2) sqrt(k1 k2)) (spheres: the reduced radius squared).
 inline double squeezeRadiusSquared(double k1, double k2) { return 2 / ((k1 + k2) * std::sqrt(k1 * k2)); }
+
+// The largest squeezeRadiusSquared two bodies can meet with, over all orientations and contact
+// points (the stability bound of the explicit squeeze). gj null: a wall. At closest points the two
+// surfaces share their normal, so k1 + k2 is the sum of the mean curvatures x 2, and by Minkowski's
+// determinant inequality sqrt(k1 k2) >= sqrt(G_i) + sqrt(G_j): exact for spheres and for a
+// spheroid's pole or equator at a wall.
+double largestSqueezeRadiusSquared(const Shape& gi, const Shape* gj);
 
 // Two bodies' nearest points, or their deepest ones when they overlap: n the unit normal from body i
 // towards body j, gap the signed distance along it (< 0: the overlap depth), pI and pJ the points
