@@ -11,13 +11,16 @@
         without lubrication, and with the LLCM: rebound and spin (about 3 minutes)
   settling: cases/spheroid_settling.opts, a prolate spheroid released at 45 degrees settling at
         Re about 10: its tilt and speed until it lies on the bottom (about 30 seconds)
-usage: shapes.py [drag|jeffery|bounce|settling|all] [--res N] [--reuse]
+  pair: drafting, kissing and tumbling of two prolate spheroids (aspect 2) in the liquid of the
+        settling case, one 3 d_v above the other, against two spheres of the same volume: the
+        centres' distance, the time they spend close, their tilt (about 12 minutes)
+usage: shapes.py [drag|jeffery|bounce|settling|pair|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
 
-what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling"), valued=("--res",))
+what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling", "pair"), valued=("--res",))
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
 reuse = "--reuse" in sys.argv
 RV = 0.126            # equal-volume radius (m) in the box of side 1
@@ -232,6 +235,64 @@ def settling():
     fig.savefig(os.path.join(outdir, "spheroid_settling.png"), dpi=120)
 
 
+
+def pair():
+    """Two bodies of equal volume (d_v 2.52 mm) released at rest one above the other, 3 d_v apart,
+    the upper one 0.2 d_v aside; prolate ones lie broadside (axis along x, their steady attitude).
+    The settling case's liquid and grid (d_v/dx 7.6), the box 120 mm tall, the LLCM on (its explicit squeeze
+    at the saturation gap 4e-4 a is stable for DEM sub-steps below 3 us: 1000 per fluid step)."""
+    dv = 2 * 0.001 * 2 ** (1 / 3)
+    bodies = {"prolate spheroids": ("spheroid", 2, 0.001, (0.7071068, 0, 0.7071068, 0)),
+              "spheres": ("sphere", 1, dv / 2, (1, 0, 0, 0))}
+    fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
+    for name, (shape, aspect, a, q) in bodies.items():
+        out = os.path.join(scratch, "vp_val_shape_pair_" + shape)
+        if not (reuse and os.path.exists(os.path.join(out, "particle_1.csv"))):
+            os.makedirs(out, exist_ok=True)
+            inp = os.path.join(out, "pair.csv")
+            with open(inp, "w") as f:
+                f.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,shape,aspect,qw,qx,qy,qz\n")
+                for i, (x, z) in enumerate(((0.006, 0.105), (0.006 + 0.2 * dv, 0.105 + 3 * dv))):
+                    f.write("%d,%g,0.006,%g,%g,2000,0,0,0,0,0,0,%s,%g,%g,%g,%g,%g\n" % ((i, x, z, a, shape, aspect) + q))
+            # The settling case without its one particle.
+            case = [w for line in open(os.path.join(root, "cases", "spheroid_settling.opts"))
+                    if line.startswith("-") and not line.startswith("-particle_") for w in line.split()]
+            subprocess.run(["mpirun", "-n", ranks, vpsolve] + case +
+                           ["-particles_file", inp, "-grid_hi", "0.012,0.012,0.12", "-grid_n", "36,36,360", "-lub_model", "llcm", "-dem_substeps", "1000",
+                            "-time_final", "1.5", "-output_dir", out, "-output_overwrite", "-monitor_every", "0", "-output_dt", "0"],
+                           check=True, stdout=subprocess.DEVNULL)
+        rows = [list(csv.DictReader(open(os.path.join(out, "particle_%d.csv" % i)))) for i in (0, 1)]
+        n = min(len(rows[0]), len(rows[1]))
+        t = [float(rows[0][k]["time"]) for k in range(n)]
+        x = [[[float(rows[i][k][c]) for c in "xyz"] for k in range(n)] for i in (0, 1)]
+        dist = [math.dist(x[0][k], x[1][k]) / dv for k in range(n)]
+        # Until the leader nears the bottom (1.5 d_v above it): the wall's part left out.
+        end = next((k for k in range(n) if x[0][k][2] < 1.5 * dv), n)
+        close = sum(t[k + 1] - t[k] for k in range(end - 1) if dist[k] < 1.5)
+        kiss = min(range(end), key=lambda k: dist[k])
+        tilt = []
+        for i in (0, 1):
+            w, qx, qy, qz = (float(rows[i][kiss][c]) for c in ("qw", "qx", "qy", "qz"))
+            tilt.append(math.degrees(math.acos(min(1.0, abs(1 - 2 * (qx * qx + qy * qy))))))
+        passed = next((t[k] for k in range(end) if x[1][k][2] < x[0][k][2]), None)
+        print("pair: %-18s closest %.3f d_v at t = %.3f s, %.3f s within 1.5 d_v (to t = %.3f s); the trailing body passes "
+              "the leading one %s%s" % (name, dist[kiss], t[kiss], close, t[end - 1],
+                                      "at t = %.3f s" % passed if passed is not None else "never",
+                                      "; tilts at the closest %.0f / %.0f degrees" % tuple(tilt) if shape == "spheroid" else ""),
+              flush=True)
+        axes[0].plot(t[:end], dist[:end], label="%s: %.2f s within 1.5 d_v" % (name, close))
+        axes[1].plot(t[:end], [(x[1][k][2] - x[0][k][2]) / dv for k in range(end)], label=name)
+    axes[0].axhline(1.5, color="0.7", lw=0.8)
+    axes[0].set_xlabel("t (s)")
+    axes[0].set_ylabel("centre distance / d_v")
+    axes[1].set_xlabel("t (s)")
+    axes[1].set_ylabel("height of the trailing body above the leading one / d_v")
+    axes[0].legend(fontsize=7)
+    fig.suptitle("Drafting, kissing and tumbling at Re about 10: two prolate spheroids (aspect 2) against two spheres", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "spheroid_pair.png"), dpi=120)
+
+
 if what in ("drag", "all"):
     drag()
 if what in ("jeffery", "all"):
@@ -240,3 +301,5 @@ if what in ("bounce", "all"):
     bounce()
 if what in ("settling", "all"):
     settling()
+if what in ("pair", "all"):
+    pair()

@@ -36,6 +36,39 @@ PairState squeezeState(const Vec3& n, double gap, double R2, const Vec3& vI, con
   return st;
 }
 
+// One side of a non-sphere's gap for the tangential terms: the sphere osculating the surface at its
+// nearest point p (outward normal m) with the Gaussian radius of curvature 1 / sqrt(k1 k2) there,
+// its centre relative to the body's, moving with the body. A wall: the default.
+struct OsculatingSphere {
+  double radius = kWallRadius;
+  Vec3 centre, velocity, spin;
+};
+
+OsculatingSphere osculating(const Tensor3& K, const Vec3& p, const Vec3& m, const Vec3& v, const Vec3& w)
+{
+  const std::array<double, 2> k = tangentEigenvalues(K, m);
+  const double R = 1 / std::sqrt(k[0] * k[1]);
+  const Vec3 centre = p - R * m;
+  return {R, centre, v + cross(w, centre), w};
+}
+
+// The tangential terms of the lubrication model across a non-sphere's gap (docs/shapes.md): those of
+// the two osculating spheres (st: normal, gap, viscosity, wall slip), their force and torques acting
+// on the bodies, the torques moved to the bodies' centres. The normal part is the squeeze's (left out).
+PairForce shapedShear(const LubricationParams& film, PairState st, const OsculatingSphere& i, const OsculatingSphere& j,
+                      double contactGap, double scale)
+{
+  st.radiusI = i.radius;
+  st.radiusJ = j.radius;
+  st.velocityI = i.velocity;
+  st.velocityJ = j.velocity;
+  st.angularVelocityI = i.spin;
+  st.angularVelocityJ = j.spin;
+  const PairForce f = lubricationForce(film, st, contactGap, scale);
+  const Vec3 t = st.tangential(f.forceI);
+  return {t, f.torqueI + cross(i.centre, t), f.torqueJ - cross(j.centre, t)};
+}
+
 } // namespace
 
 DemSolver::DemSolver(const Grid& grid, const Config& c, const ParticleConfig& pc)
@@ -347,7 +380,8 @@ void DemSolver::computeForces(double dt)
 // dashpot and Coulomb law of spheres along the common normal, acting at the midpoint of the two
 // points on each body's lever; no rolling resistance. Apart, the squeeze of the lubrication model,
 // geometry-free: R^2 from the two surfaces' curvatures at their nearest points, at the gap between
-// them, acting at the midpoint (docs/shapes.md). Returns whether the pair touches.
+// them, acting at the midpoint; and the tangential terms of the osculating spheres (docs/shapes.md).
+// Returns whether the pair touches.
 bool DemSolver::shapedPair(std::size_t k, double dt)
 {
   ParticleStore& s = store_;
@@ -381,15 +415,24 @@ bool DemSolver::shapedPair(std::size_t k, double dt)
       return false;
     }
     P.departure[k] = handOff_.pairState(s, i, j, 0, leaving);
-    Tensor3 K = rotatedTensor(gi.curvature(toBody(s.q[i], c.pI)), s.q[i]);
+    const Tensor3 Ki = rotatedTensor(gi.curvature(toBody(s.q[i], c.pI)), s.q[i]);
     const Tensor3 Kj = rotatedTensor(gj.curvature(toBody(s.q[j], c.pJ)), s.q[j]);
-    for (int m = 0; m < 9; ++m) K[m] += Kj[m];
+    Tensor3 K;
+    for (int m = 0; m < 9; ++m) K[m] = Ki[m] + Kj[m];
     const std::array<double, 2> kk = tangentEigenvalues(K, c.n);
     const PairState st = squeezeState(c.n, c.gap, squeezeRadiusSquared(kk[0], kk[1]), vI, vJ, mu_);
     const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, scale) : lub_;
-    force = lubricationForce(film, st, contactGap, scale).forceI;
+    const Vec3 squeeze = lubricationForce(film, st, contactGap, scale).forceI;
+    const PairForce shear = shapedShear(film, st, osculating(Ki, c.pI, c.n, s.v[i], s.w[i]),
+                                        osculating(Kj, c.pJ, -c.n, s.v[j], s.w[j]), contactGap, scale);
     if (lubWatch_) watchLubrication(st, contactGap, s.invMass[i] + s.invMass[j]);
+    force = squeeze + shear.forceI;
     if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], -d, force);
+    s.force[i] += force;
+    s.torque[i] += cross(leverI, squeeze) + shear.torqueI;
+    s.force[j] -= force;
+    s.torque[j] += shear.torqueJ - cross(leverJ, squeeze);
+    return false;
   }
   s.force[i] += force;
   s.torque[i] += cross(leverI, force);
@@ -404,7 +447,7 @@ bool DemSolver::shapedPair(std::size_t k, double dt)
 // its torque. Without rolling resistance (a non-sphere resists rolling by its shape). Apart, the
 // squeeze of the lubrication model, geometry-free: that of the sphere whose gap has the same
 // curvatures, R^2 = 2 / ((k1 + k2) sqrt(k1 k2)) from the surface's principal curvatures there, at
-// the local gap, acting at that point (docs/shapes.md); no tangential terms.
+// the local gap, acting at that point; and the tangential terms of the osculating sphere (docs/shapes.md).
 int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
 {
   ParticleStore& s = store_;
@@ -446,10 +489,13 @@ int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
         st.slipWall = wall.slip;
         const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, g.a) : lub_;
         const Vec3 squeeze = lubricationForce(film, st, reachBeyond, g.a).forceI;
+        const Tensor3 K = rotatedTensor(g.curvature(p), s.q[i]);
+        const PairForce shear = shapedShear(film, st, osculating(K, lever, -n, s.v[i], s.w[i]), {kWallRadius, {}, wall.velocity, {}},
+                                            reachBeyond, g.a);
         if (lubWatch_) watchLubrication(st, reachBeyond, s.invMass[i]);
-        F += squeeze;
-        if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, squeeze);
-        T += cross(lever, squeeze);
+        F += squeeze + shear.forceI;
+        if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, squeeze + shear.forceI);
+        T += cross(lever, squeeze) + shear.torqueI;
       }
     }
   }
