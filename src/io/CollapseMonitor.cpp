@@ -2,6 +2,7 @@
 #include "vp/core/Error.hpp"
 #include "vp/core/Options.hpp"
 #include "vp/particles/DemSolver.hpp"
+#include "vp/particles/Shape.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -35,46 +36,56 @@ CollapseMonitor::CollapseMonitor(const Grid& grid, const CollapseConfig& cfg, co
                                      std::vector<std::string>{"time", "front", "front99", "height_back"}, resumeAfter);
 }
 
-CollapseMonitor::Spheres CollapseMonitor::gather(const ParticleStore& p) const
+CollapseMonitor::Particles CollapseMonitor::gather(const ParticleStore& p) const
 {
   const MPI_Comm comm = grid_.comm();
   int rank, size;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
+  constexpr int kValues = 5;
   std::vector<double> mine;
-  mine.reserve(3 * p.nOwned);
-  for (std::size_t i = 0; i < p.nOwned; ++i) mine.insert(mine.end(), {p.x[i][0], p.x[i][2], p.radius[i]});
+  mine.reserve(kValues * p.nOwned);
+  for (std::size_t i = 0; i < p.nOwned; ++i) {
+    if (p.sphere(i)) {
+      mine.insert(mine.end(), {p.x[i][0], p.x[i][2], p.radius[i], p.radius[i], 2 * p.radius[i]});
+    } else {
+      const Shape g = p.shape(i);
+      mine.insert(mine.end(), {p.x[i][0], p.x[i][2], g.extent(toBody(p.q[i], {1, 0, 0})), g.extent(toBody(p.q[i], {0, 0, 1})),
+                               2 * g.equalVolumeRadius()});
+    }
+  }
   const int n = static_cast<int>(mine.size());
   std::vector<int> counts(rank == 0 ? size : 0), offsets(counts.size(), 0);
   MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
   for (std::size_t k = 1; k < counts.size(); ++k) offsets[k] = offsets[k - 1] + counts[k - 1];
   std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
   MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm);
-  Spheres s;
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3) {
+  Particles s;
+  for (std::size_t k = 0; k + kValues - 1 < all.size(); k += kValues) {
     s.x.push_back(all[k]);
     s.z.push_back(all[k + 1]);
-    s.r.push_back(all[k + 2]);
-    s.diameter += 2 * all[k + 2];
+    s.halfX.push_back(all[k + 2]);
+    s.halfZ.push_back(all[k + 3]);
+    s.diameter += all[k + 4];
   }
-  if (!s.r.empty()) s.diameter /= s.r.size();
+  if (!s.x.empty()) s.diameter /= s.x.size();
   return s;
 }
 
 CollapseState CollapseMonitor::measure(const ParticleStore& p) const
 {
-  const Spheres s = gather(p);
+  const Particles s = gather(p);
   double v[3] = {0, 0, 0};
-  if (!s.r.empty()) {
-    std::vector<double> right(s.r.size());
-    for (std::size_t k = 0; k < right.size(); ++k) right[k] = s.x[k] + s.r[k];
+  if (!s.x.empty()) {
+    std::vector<double> right(s.x.size());
+    for (std::size_t k = 0; k < right.size(); ++k) right[k] = s.x[k] + s.halfX[k];
     std::sort(right.begin(), right.end());
     const double at = 0.99 * (right.size() - 1);
     const std::size_t lo = static_cast<std::size_t>(std::floor(at)), hi = std::min(lo + 1, right.size() - 1);
     v[0] = right.back();
     v[1] = right[lo] + (at - lo) * (right[hi] - right[lo]);
-    for (std::size_t k = 0; k < s.r.size(); ++k)
-      if (s.x[k] - grid_.lo(0) < 2 * s.diameter) v[2] = std::max(v[2], s.z[k] + s.r[k]);
+    for (std::size_t k = 0; k < s.x.size(); ++k)
+      if (s.x[k] - grid_.lo(0) < 2 * s.diameter) v[2] = std::max(v[2], s.z[k] + s.halfZ[k]);
   }
   MPI_Bcast(v, 3, MPI_DOUBLE, 0, grid_.comm());
   return {v[0], v[1], v[2]};
@@ -110,15 +121,15 @@ bool CollapseMonitor::atRest()
 
 void CollapseMonitor::finish(const RunView& run)
 {
-  const Spheres s = gather(run.dem->particles());
+  const Particles s = gather(run.dem->particles());
   CsvWriter csv(grid_.comm(), dir_ + "/deposit.csv", {"x", "h"});
-  if (s.r.empty()) return;  // every rank but 0
+  if (s.x.empty()) return;  // every rank but 0
   const double lo = grid_.lo(0), width = s.diameter;
   const std::size_t bins = static_cast<std::size_t>(std::ceil((grid_.hi(0) - lo) / width));
   std::vector<double> top(bins, 0.0);
-  for (std::size_t k = 0; k < s.r.size(); ++k) {
+  for (std::size_t k = 0; k < s.x.size(); ++k) {
     const std::size_t b = std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, (s.x[k] - lo) / width)));
-    top[b] = std::max(top[b], s.z[k] + s.r[k]);
+    top[b] = std::max(top[b], s.z[k] + s.halfZ[k]);
   }
   for (std::size_t b = 0; b < bins; ++b) csv.row({lo + (b + 0.5) * width, top[b]});
 }

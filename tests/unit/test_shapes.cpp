@@ -4,9 +4,11 @@
 // the DEM: torque-free precession against the exact solution of the symmetric top, and its bounce
 // on a wall.
 #include "../support/DemFixtures.hpp"
+#include "vp/io/CollapseMonitor.hpp"
 #include "vp/particles/Shape.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 using namespace vp;
@@ -583,4 +585,26 @@ TEST_CASE("DEM spheroids: an oblique, spinning, frictional collision conserves m
     CHECK((s.v[1].x - s.v[0].x) / 1.0 == Approx(e).epsilon(0.02));
     CHECK(norm(s.w[0]) + norm(s.w[1]) < 1e-9);
   }
+}
+
+TEST_CASE("Collapse monitor: the front and the column height reach a spheroid's surface, not its equatorial radius", "[shape]")
+{
+  // A prolate (a = 1 cm, c = 2 cm) lying along x at the front, one standing at the back wall, and a
+  // sphere of 1 cm between them.
+  Config c = boxConfig({0, 0, 0}, {1, 1, 1}, {4, 4, 4});
+  c.gravity = {0, 0, 0};
+  const double a = 0.01;
+  Grid grid(PETSC_COMM_SELF, c.grid, c.bc);
+  DemSolver dem(grid, c, resolved(c, contactConfig(1e-3, 0.9, 0.3)),
+                {spheroid(0, {0.5, 0.5, 0.2}, a, 2, {1, 0, 0}, 2000), spheroid(1, {0.02, 0.5, 0.3}, a, 2, {0, 0, 1}, 2000),
+                 sphere(2, {0.3, 0.5, 0.05}, a, 2000)});
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "vp_test_collapse_shapes";
+  std::filesystem::create_directories(dir);
+  CollapseConfig cfg;
+  cfg.on = true;
+  const CollapseState m = CollapseMonitor(grid, cfg, dir.string()).measure(dem.particles());
+  CHECK(m.front == Approx(0.5 + 2 * a).epsilon(1e-12));
+  // Within two mean (equal-volume) diameters of the back wall: the standing prolate's top.
+  CHECK(m.heightBack == Approx(0.3 + 2 * a).epsilon(1e-12));
+  std::filesystem::remove_all(dir);
 }

@@ -2,13 +2,15 @@
 // The measurements of a granular column collapse (a dam break), taken by the run itself
 // (-collapse_monitor; docs/dam_break.md): the column stands against the low-x wall, flows along +x
 // and gravity points along -z. collapse.csv gets one row per time-series step (-series_every):
-//   front      the rightmost sphere surface, max(x + r)
-//   front99    the 99th percentile of x + r (numpy's linear rule), the front without stray spheres
-//   height_back the highest sphere top, max(z + r), of the spheres whose centre lies within two
-//              mean diameters of the low-x wall (the column height at the back wall)
-// and deposit.csv at the end of the run: the highest sphere top per bin of one mean diameter along
-// x, from the low-x wall (the deposit profile h(x)). The owned spheres' x, z and r are gathered on
-// rank 0 (a few numbers per sphere), so the values do not depend on the rank count.
+//   front      the rightmost particle surface, max(x + r) (r: the radius of a sphere, a spheroid's
+//              half-width along the axis; particles/Shape.hpp)
+//   front99    the 99th percentile of x + r (numpy's linear rule), the front without stray particles
+//   height_back the highest particle top, max(z + r), of the particles whose centre lies within two
+//              mean (equal-volume) diameters of the low-x wall (the column height at the back wall)
+// and deposit.csv at the end of the run: the highest particle top per bin of one mean diameter
+// along x, from the low-x wall (the deposit profile h(x)). The owned particles' centres and
+// half-widths are gathered on rank 0 (a few numbers each), so the values do not depend on the
+// rank count.
 #include "vp/grid/Grid.hpp"
 #include "vp/io/CsvWriter.hpp"
 #include "vp/io/Monitor.hpp"
@@ -51,11 +53,13 @@ public:
   void finish(const RunView& run) override;
 
 private:
-  struct Spheres {
-    std::vector<double> x, z, r;  // all spheres, rank 0 only
-    double diameter = 0;          // mean diameter
+  // All particles, rank 0 only: centres, half-widths along x and z (the radius of a sphere; a
+  // spheroid's extent, particles/Shape.hpp), and the mean (equal-volume) diameter.
+  struct Particles {
+    std::vector<double> x, z, halfX, halfZ;
+    double diameter = 0;
   };
-  Spheres gather(const ParticleStore& p) const;
+  Particles gather(const ParticleStore& p) const;
 
   bool atRest();
 
