@@ -375,13 +375,45 @@ void DemSolver::computeForces(double dt)
   wallContacts_ = wallContacts;
 }
 
-// A pair with a non-sphere (particles/Shape.hpp): the contact at the bodies' deepest points
-// (closestPoints), at the spheres' gap (roughness x the sum of the equatorial radii), the spring-
-// dashpot and Coulomb law of spheres along the common normal, acting at the midpoint of the two
-// points on each body's lever; no rolling resistance. Apart, the squeeze of the lubrication model,
-// geometry-free: R^2 from the two surfaces' curvatures at their nearest points, at the gap between
-// them, acting at the midpoint; and the tangential terms of the osculating spheres (docs/shapes.md).
-// Returns whether the pair touches.
+// The forces across a gap with a non-sphere (particles/Shape.hpp), particles and walls alike (a wall
+// is a half-space: flat, still or sliding): n the unit normal from i towards j, gap the signed
+// distance between the two surface points, the forces acting at the sides' lever points. Touching
+// (gap below contactGap, a law given): the spring-dashpot and Coulomb law of spheres along n. Apart,
+// within the activation gap (in units of scale) or leaving: the squeeze of the lubrication model at
+// the gap's curvatures and the osculating spheres' tangential terms (docs/shapes.md).
+PairForce DemSolver::gapForce(const GapSide& i, const GapSide& j, const Vec3& n, double gap, double contactGap, double scale,
+                              const ContactCoefficients* law, Vec3& spring, bool leaving, bool slip, double invMassSum, double dt,
+                              bool& touching)
+{
+  const Vec3 vI = i.v + cross(i.w, i.lever), vJ = j.v + cross(j.w, j.lever);
+  const double overlap = contactGap - gap;
+  touching = law && overlap > 0;
+  if (touching) {
+    const ContactForce f = contactForce(-n, overlap, vI - vJ, *law, spring, dt);  // the normal towards i
+    const Vec3 F = f.normal + f.tangential;
+    return {F, cross(i.lever, F), cross(F, j.lever)};
+  }
+  spring = Vec3{};  // released: the spring is dropped
+  if (lub_.model == LubModel::None || overlap > 0 || !(gap < lub_.activationGap(scale) || leaving)) return {};
+  auto curvature = [](const GapSide& b) { return b.shape ? rotatedTensor(b.shape->curvature(toBody(b.q, b.point)), b.q) : Tensor3{}; };
+  const Tensor3 Ki = curvature(i), Kj = curvature(j);
+  Tensor3 K;
+  for (int m = 0; m < 9; ++m) K[m] = Ki[m] + Kj[m];
+  const std::array<double, 2> k = tangentEigenvalues(K, n);
+  PairState st = squeezeState(n, gap, squeezeRadiusSquared(k[0], k[1]), vI, vJ, mu_);
+  st.slipWall = slip;
+  const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, scale) : lub_;
+  const Vec3 squeeze = lubricationForce(film, st, contactGap, scale).forceI;
+  const OsculatingSphere oj = j.shape ? osculating(Kj, j.point, -n, j.v, j.w) : OsculatingSphere{kWallRadius, {}, j.v, {}};
+  const PairForce shear = shapedShear(film, st, osculating(Ki, i.point, n, i.v, i.w), oj, contactGap, scale);
+  if (lubWatch_) watchLubrication(st, contactGap, invMassSum);
+  return {squeeze + shear.forceI, cross(i.lever, squeeze) + shear.torqueI, shear.torqueJ + cross(squeeze, j.lever)};
+}
+
+// A pair with a non-sphere: its gap between the bodies' nearest points (closestPoints; when they
+// overlap, the deepest ones), the forces at the midpoint of the two points, each body taking the
+// torque of its lever; the contact at the spheres' gap (roughness x the sum of the equatorial radii),
+// no rolling resistance. Returns whether the pair touches.
 bool DemSolver::shapedPair(std::size_t k, double dt)
 {
   ParticleStore& s = store_;
@@ -391,112 +423,67 @@ bool DemSolver::shapedPair(std::size_t k, double dt)
   const Vec3 d = s.x[j] - s.x[i];
   const ClosestPoints c = closestPoints(gi, s.q[i], gj, s.q[j], d, d);
   const double contactGap = law_.roughnessGap(gi.a, gj.a);
-  const double overlap = contactGap - c.gap;
   const Vec3 mid = 0.5 * (c.pI + d + c.pJ);  // from the centre of i
-  const Vec3 leverI = mid, leverJ = mid - d;
-  const Vec3 vI = s.v[i] + cross(s.w[i], leverI), vJ = s.v[j] + cross(s.w[j], leverJ);
-  Vec3 force;
-  bool touching = overlap > 0;
+  const GapSide bodyI{c.pI, mid, s.v[i], s.w[i], &gi, s.q[i]}, bodyJ{c.pJ, mid - d, s.v[j], s.w[j], &gj, s.q[j]};
+  const ContactCoefficients& law = P.laws[P.law[k]];
+  const bool leaving = handOff_.pairLeaving(s, i, j, -c.n, c.gap, P.departure[k]);
+  bool touching = false;
+  const PairForce f = gapForce(bodyI, bodyJ, c.n, c.gap, contactGap, std::min(gi.a, gj.a), &law, P.spring[k], leaving, false,
+                               s.invMass[i] + s.invMass[j], dt, touching);
+  P.touching[k] = touching;
   if (touching) {
-    P.touching[k] = 1;
-    const ContactCoefficients& law = P.laws[P.law[k]];
-    const ContactForce f = contactForce(-c.n, overlap, vI - vJ, law, P.spring[k], dt);  // the normal towards i
+    const double overlap = contactGap - c.gap;
     noteOverlap(overlap / (2 * std::min(gi.smallestSemiAxis(), gj.smallestSemiAxis())), s.id[i], s.id[j]);
-    force = f.normal + f.tangential;
-    if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], -d, force);
     P.departure[k] = handOff_.pairState(s, i, j, handOff_.touchPair(s, i, j, overlap, law.kn), false);
   } else {
-    P.spring[k] = Vec3{};  // released: the spring is dropped
-    P.touching[k] = 0;
-    const double scale = std::min(gi.a, gj.a);
-    const bool leaving = handOff_.pairLeaving(s, i, j, -c.n, c.gap, P.departure[k]);
-    if (lub_.model == LubModel::None || !(c.gap < lub_.activationGap(scale) || leaving)) {
-      P.departure[k] = 0;
-      return false;
-    }
     P.departure[k] = handOff_.pairState(s, i, j, 0, leaving);
-    const Tensor3 Ki = rotatedTensor(gi.curvature(toBody(s.q[i], c.pI)), s.q[i]);
-    const Tensor3 Kj = rotatedTensor(gj.curvature(toBody(s.q[j], c.pJ)), s.q[j]);
-    Tensor3 K;
-    for (int m = 0; m < 9; ++m) K[m] = Ki[m] + Kj[m];
-    const std::array<double, 2> kk = tangentEigenvalues(K, c.n);
-    const PairState st = squeezeState(c.n, c.gap, squeezeRadiusSquared(kk[0], kk[1]), vI, vJ, mu_);
-    const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, scale) : lub_;
-    const Vec3 squeeze = lubricationForce(film, st, contactGap, scale).forceI;
-    const PairForce shear = shapedShear(film, st, osculating(Ki, c.pI, c.n, s.v[i], s.w[i]),
-                                        osculating(Kj, c.pJ, -c.n, s.v[j], s.w[j]), contactGap, scale);
-    if (lubWatch_) watchLubrication(st, contactGap, s.invMass[i] + s.invMass[j]);
-    force = squeeze + shear.forceI;
-    if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], -d, force);
-    s.force[i] += force;
-    s.torque[i] += cross(leverI, squeeze) + shear.torqueI;
-    s.force[j] -= force;
-    s.torque[j] += shear.torqueJ - cross(leverJ, squeeze);
-    return false;
   }
-  s.force[i] += force;
-  s.torque[i] += cross(leverI, force);
-  s.force[j] -= force;
-  s.torque[j] -= cross(leverJ, force);
+  if (stress_.on() && i < s.nOwned && dot(f.forceI, f.forceI) > 0)
+    stress_.addPair(touching ? PairStress::Contact : PairStress::Lubrication, s.x[i], -d, f.forceI);
+  s.force[i] += f.forceI;
+  s.torque[i] += f.torqueI;
+  s.force[j] -= f.forceI;
+  s.torque[j] += f.torqueJ;
   return touching;
 }
 
-// The walls of a non-sphere (particles/Shape.hpp): the contact at its surface point nearest the wall,
-// the point whose outward normal is the wall's inward one reversed, at the gap of spheres
-// (2 x roughness x the equatorial radius). The normal force acts there, so a tilted spheroid feels
-// its torque. Without rolling resistance (a non-sphere resists rolling by its shape). Apart, the
-// squeeze of the lubrication model, geometry-free: that of the sphere whose gap has the same
-// curvatures, R^2 = 2 / ((k1 + k2) sqrt(k1 k2)) from the surface's principal curvatures there, at
-// the local gap, acting at that point; and the tangential terms of the osculating sphere (docs/shapes.md).
+// The walls of a non-sphere: each a half-space met at the body's surface point whose outward normal
+// points into the wall (gap: the centre's distance minus the extent along it), the forces of
+// gapForce acting at mid-gap (so a tilted spheroid is turned by them), the contact at the spheres'
+// gap (2 x roughness x the equatorial radius). No rolling resistance (a non-sphere resists rolling
+// by its shape). Returns the number of walls touched.
 int DemSolver::spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt)
 {
   ParticleStore& s = store_;
   const Shape g = s.shape(i);
   const double reachBeyond = law_.roughnessGap(g.a, 0);
-  const bool lubricated = lub_.model != LubModel::None;
-  const double lubReach = lubricated ? lub_.activationGap(g.a) : 0;
+  const double lubReach = lub_.model != LubModel::None ? lub_.activationGap(g.a) : 0;
   int touching = 0;
   bool departing = false;
   std::uint8_t touch = 0;
   if (s.wallTouch[i] || nearWall(s.x[i], g.boundingRadius() + std::max({reachBeyond, lubReach, handOff_.departureGap()}))) {
+    const ContactCoefficients coef = law_.coefficients(s.mass[i], true);
     for (int f : activeWalls_) {
       const Wall& wall = walls_[f];
-      const Vec3 n = wall.normal();
-      const Vec3 towardWall = toBody(s.q[i], -n);
-      const double gap = wall.distance(s.x[i]) - g.extent(towardWall), overlap = reachBeyond - gap;
-      Vec3& spring = s.wallSpring[i][f];
-      if (overlap <= 0 || s.fixed(i)) {
-        spring = Vec3{};
-      } else {
-        touch |= 1 << f;
-        const Vec3 lever = toSpace(s.q[i], g.pointWithNormal(towardWall));
-        const Vec3 vc = s.v[i] + cross(s.w[i], lever) - wall.velocity;
-        const ContactCoefficients coef = law_.coefficients(s.mass[i], true);
-        const ContactForce c = contactForce(n, overlap, vc, coef, spring, dt);
-        noteOverlap(overlap / (2 * g.smallestSemiAxis()), s.id[i], -1 - f);
-        F += c.normal + c.tangential;
-        if (stress_.on()) stress_.addWall(PairStress::Contact, f, c.normal + c.tangential);
-        T += cross(lever, c.normal + c.tangential);
-        ++touching;
-        handOff_.touchWall(s, i, overlap, coef.kn);
-      }
-      const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, n, gap);
+      const Vec3 n = -wall.normal();  // from the body towards the wall
+      const Vec3 towardWall = toBody(s.q[i], n);
+      const Vec3 p = toSpace(s.q[i], g.pointWithNormal(towardWall));
+      const double gap = wall.distance(s.x[i]) - g.extent(towardWall);
+      const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, wall.normal(), gap);
       departing = departing || leaving;
-      if (overlap <= 0 && lubricated && (gap < lubReach || leaving)) {
-        const Vec3 p = g.pointWithNormal(towardWall), lever = toSpace(s.q[i], p);
-        const std::array<double, 2> k = tangentEigenvalues(g.curvature(p), towardWall);
-        PairState st = squeezeState(-n, gap, squeezeRadiusSquared(k[0], k[1]), s.v[i] + cross(s.w[i], lever), wall.velocity, mu_);
-        st.slipWall = wall.slip;
-        const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, g.a) : lub_;
-        const Vec3 squeeze = lubricationForce(film, st, reachBeyond, g.a).forceI;
-        const Tensor3 K = rotatedTensor(g.curvature(p), s.q[i]);
-        const PairForce shear = shapedShear(film, st, osculating(K, lever, -n, s.v[i], s.w[i]), {kWallRadius, {}, wall.velocity, {}},
-                                            reachBeyond, g.a);
-        if (lubWatch_) watchLubrication(st, reachBeyond, s.invMass[i]);
-        F += squeeze + shear.forceI;
-        if (stress_.on()) stress_.addWall(PairStress::Lubrication, f, squeeze + shear.forceI);
-        T += cross(lever, squeeze) + shear.torqueI;
+      bool contact = false;
+      const PairForce w = gapForce({p, p + (0.5 * gap) * n, s.v[i], s.w[i], &g, s.q[i]}, {{}, {}, wall.velocity, {}, nullptr, {}}, n, gap,
+                                   reachBeyond, g.a, s.fixed(i) ? nullptr : &coef, s.wallSpring[i][f], leaving, wall.slip, s.invMass[i], dt,
+                                   contact);
+      if (contact) {
+        touch |= 1 << f;
+        ++touching;
+        noteOverlap((reachBeyond - gap) / (2 * g.smallestSemiAxis()), s.id[i], -1 - f);
+        handOff_.touchWall(s, i, reachBeyond - gap, coef.kn);
       }
+      if (stress_.on() && dot(w.forceI, w.forceI) > 0) stress_.addWall(contact ? PairStress::Contact : PairStress::Lubrication, f, w.forceI);
+      F += w.forceI;
+      T += w.torqueI;
     }
   }
   s.wallTouch[i] = touch;

@@ -94,6 +94,17 @@ private:
   void computeForces(double dt);
   bool nearWall(const Vec3& x, double reach) const;
   int spheroidWalls(std::size_t i, Vec3& F, Vec3& T, double dt);
+  // One side of a gap with a non-sphere: the surface point nearest the partner and the point the
+  // gap's forces act at, from its centre in space; its motion; its shape and orientation (none: a
+  // wall, a flat half-space).
+  struct GapSide {
+    Vec3 point, lever, v, w;
+    const Shape* shape = nullptr;
+    Quaternion q;
+  };
+  PairForce gapForce(const GapSide& i, const GapSide& j, const Vec3& n, double gap, double contactGap, double scale,
+                     const ContactCoefficients* law, Vec3& spring, bool leaving, bool slip, double invMassSum, double dt,
+                     bool& touching);
   bool shapedPair(std::size_t k, double dt);
   void checkShapes(const std::vector<ParticleRecord>& all) const;
   // m v^2 + w . I w of a non-sphere
