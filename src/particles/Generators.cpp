@@ -314,6 +314,47 @@ void validateParticles(const std::vector<ParticleRecord>& p, const Config& c, do
   }
 }
 
+namespace {
+
+// Generated spheroids (-particle_shape spheroid): the generator places their bounding spheres (so
+// none overlap, whatever the orientations), then each becomes a spheroid of the given equatorial
+// radius, aligned with -particle_axis or, with -particle_orientation random, turned uniformly.
+// A random packing's fraction is the spheroids': its bounding spheres' is larger by bound^3 / aspect.
+double boundOverEquator(const ParticleConfig& pc) { return std::max(pc.aspect, 1.0); }
+
+LatticeInput bounding(LatticeInput in, const ParticleConfig& pc)
+{
+  in.radius *= boundOverEquator(pc);
+  return in;
+}
+
+RandomInput bounding(RandomInput in, const ParticleConfig& pc)
+{
+  const double b = boundOverEquator(pc);
+  in.radius *= b;
+  in.volumeFraction *= b * b * b / pc.aspect;
+  return in;
+}
+
+std::vector<ParticleRecord> spheroids(std::vector<ParticleRecord> p, const ParticleConfig& pc, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed + 1);
+  std::normal_distribution<double> gauss;
+  for (ParticleRecord& r : p) {
+    r.radius /= boundOverEquator(pc);
+    r.aspect.value = pc.aspect;
+    Vec3 axis = pc.axis;
+    while (pc.randomAxes) {  // isotropic: a uniform direction
+      axis = {gauss(rng), gauss(rng), gauss(rng)};
+      if (norm(axis) > 1e-3) break;
+    }
+    r.q = alignedWith(axis / norm(axis));
+  }
+  return p;
+}
+
+} // namespace
+
 std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Config& c)
 {
   std::vector<ParticleRecord> p;
@@ -324,10 +365,10 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
     p = h5 ? readParticleHdf5(f) : readParticleCsv(f);
     option = "-particles_file";
   } else if (pc.lattice.set) {
-    p = latticeParticles(pc.lattice, pc.density);
+    p = pc.spheroid ? spheroids(latticeParticles(bounding(pc.lattice, pc), pc.density), pc, pc.lattice.seed) : latticeParticles(pc.lattice, pc.density);
     option = "-particles_lattice";
   } else if (pc.random.set) {
-    p = randomParticles(pc.random, pc.density);
+    p = pc.spheroid ? spheroids(randomParticles(bounding(pc.random, pc), pc.density), pc, pc.random.seed) : randomParticles(pc.random, pc.density);
     option = "-particles_random";
   } else if (pc.packed.set) {
     std::array<bool, 3> wrap{};

@@ -80,10 +80,13 @@ ParticleConfig ParticleConfig::read()
     c.radius = o.real("-particle_radius", c.radius, "Radius of the single particle and of generated ones (m)");
     c.density = o.real("-particle_density", c.density, "Density of the single particle and of generated ones (kg/m^3)");
     c.spheroid = o.choice("-particle_shape", {"sphere", "spheroid"}, 0,
-                          "Shape of the single particle: sphere (of -particle_radius) or spheroid (equatorial semi-axis "
-                          "-particle_radius, polar -particle_aspect times it; docs/shapes.md)") == 1;
+                          "Shape of the single particle, a lattice's or random ones: sphere or spheroid (equatorial "
+                          "semi-axis the given radius, polar -particle_aspect times it; docs/shapes.md)") == 1;
     c.aspect = o.real("-particle_aspect", c.aspect, "Spheroid: polar over equatorial semi-axis c/a (> 1 prolate, < 1 oblate)");
     c.axis = o.vec3("-particle_axis", c.axis, "Spheroid: initial direction x,y,z of its symmetry axis");
+    c.randomAxes = o.choice("-particle_orientation", {"aligned", "random"}, 0,
+                            "Generated spheroids: every axis along -particle_axis, or uniform on the sphere (from the "
+                            "generator's seed)") == 1;
   }
   {
     // Checks and outputs, not the set-up: a restart may change them.
@@ -167,10 +170,23 @@ void ParticleConfig::validate() const
   if (spheroid) {
     if (!(aspect > 0) || !std::isfinite(aspect)) failOption("-particle_aspect", "must be > 0 (c/a: > 1 prolate, < 1 oblate), got " + formatNumber(aspect));
     if (!(norm(axis) > 0) || !std::isfinite(norm(axis))) failOption("-particle_axis", "must be a non-zero direction x,y,z");
-    if (!single.set) failOption("-particle_shape", "spheroid applies to the single particle (-particle_position); a file gives shapes in its aspect and qw,qx,qy,qz columns");
-  } else if (aspect != 1 || !(axis.x == 0 && axis.y == 0 && axis.z == 1)) {
-    failOption(aspect != 1 ? "-particle_aspect" : "-particle_axis", "needs -particle_shape spheroid");
+    if (!single.set && !lattice.set && !random.set)
+      failOption("-particle_shape", "spheroid applies to the single particle (-particle_position), a lattice or random particles; "
+                                    "a file gives shapes in its aspect and qw,qx,qy,qz columns, and -particles_packed grows spheres");
+    const double bound = std::max(aspect, 1.0);  // bounding radius over the equatorial one
+    if (lattice.set && 2 * bound * lattice.radius > lattice.spacing)
+      failOption("-particles_lattice", "spacing " + formatNumber(lattice.spacing) + " must be >= the spheroids' longest axis " +
+                                           formatNumber(2 * bound * lattice.radius));
+    // Random addition excludes the bounding spheres: their volume fraction is the spheroids' times bound^3 / aspect.
+    if (random.set && random.volumeFraction * bound * bound * bound / aspect > 0.35)
+      failOption("-particles_random", "the spheroids' bounding spheres would fill " +
+                                          formatNumber(random.volumeFraction * bound * bound * bound / aspect) +
+                                          " of the box, more than random sequential addition reaches (0.35): at most " +
+                                          formatNumber(0.35 * aspect / (bound * bound * bound)) + " for aspect " + formatNumber(aspect));
+  } else if (aspect != 1 || !(axis.x == 0 && axis.y == 0 && axis.z == 1) || randomAxes) {
+    failOption(aspect != 1 ? "-particle_aspect" : randomAxes ? "-particle_orientation" : "-particle_axis", "needs -particle_shape spheroid");
   }
+  if (randomAxes && single.set) failOption("-particle_orientation", "random is for generated spheroids; give -particle_axis");
   if (!(maxOverlap >= 0 && maxOverlap < 0.5)) failOption("-particles_max_overlap", "must be in [0, 0.5), got " + formatNumber(maxOverlap));
   contact.validate();
   if (contact.departureCells > 0 && lubrication.model == LubModel::None)

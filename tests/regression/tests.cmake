@@ -103,8 +103,14 @@ vp_bad_input(spheroid_aspect 1 "option -particle_aspect: must be > 0 \\(c/a: > 1
 vp_bad_input(spheroid_axis 1 "option -particle_axis: must be a non-zero direction x,y,z"
              ${VP_SPHEROID} -particle_shape spheroid -particle_aspect 2 -particle_axis 0,0,0)
 vp_bad_input(spheroid_aspect_of_sphere 1 "option -particle_aspect: needs -particle_shape spheroid" ${VP_SPHEROID} -particle_aspect 2)
-vp_bad_input(spheroid_generated 1 "option -particle_shape: spheroid applies to the single particle"
-             -options_file ${VP_DEM_DATA}/box.opts -particles_lattice 0,0,0,0.04,0.04,0.04,0.01,0.002,0,1 -particle_shape spheroid)
+vp_bad_input(spheroid_packed 1 "option -particle_shape: spheroid applies to the single particle .-particle_position., a lattice or random particles"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_packed 0,0,0,0.04,0.04,0.04,0.3,0.002,1 -particle_shape spheroid -particle_aspect 2)
+vp_bad_input(spheroid_lattice_spacing 1 "option -particles_lattice: spacing 0.01 must be >= the spheroids' longest axis 0.012"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_lattice 0,0,0,0.04,0.04,0.04,0.01,0.002,0,1 -particle_shape spheroid -particle_aspect 3)
+vp_bad_input(spheroid_random_fraction 1 "option -particles_random: the spheroids' bounding spheres would fill 0.8 of the box, more than random sequential addition reaches .0.35.: at most 0.0875 for aspect 2"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_random 0,0,0,0.04,0.04,0.04,0.2,0.002,1 -particle_shape spheroid -particle_aspect 2)
+vp_bad_input(spheroid_orientation_of_sphere 1 "option -particle_orientation: needs -particle_shape spheroid"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_random 0,0,0,0.04,0.04,0.04,0.1,0.002,1 -particle_orientation random)
 vp_bad_input(spheroid_lub_inertia 1 "option -lub_inertia: the film's inertia is that of a sphere at a wall: not for spheroids"
              -options_file ${VP_DEM_DATA}/box.opts -particles_file ${VP_DEM_DATA}/spheroids.csv -lub_model llcm -lub_activation 0.05 -lub_inertia)
 vp_bad_input(spheroid_overlap 1 "option -particles_file: particles 0 and 1 overlap by"

@@ -4,6 +4,7 @@
 #include "vp/core/Error.hpp"
 #include "vp/particles/Generators.hpp"
 #include "vp/particles/Packing.hpp"
+#include "vp/particles/Shape.hpp"
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
@@ -68,6 +69,50 @@ TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by s
   in.volumeFraction = 0.35;  // within the option's range but beyond what this small box takes
   in.hi = {0.009, 0.009, 0.009};
   CHECK_THROWS_WITH(randomParticles(in, 2500), Catch::Contains("-particles_random") && Catch::Contains("lower the volume fraction"));
+}
+
+TEST_CASE("Generated spheroids: a lattice's and random ones, aligned or isotropic, at the volume fraction, apart", "[dem][shape]")
+{
+  Config c = boxConfig({0, 0, 0}, {0.05, 0.05, 0.05}, {4, 4, 4});
+  ParticleConfig pc;
+  pc.density = 2000;
+  pc.spheroid = true;
+  pc.aspect = 2;
+  pc.axis = {1, 1, 0};
+  auto apart = [](const std::vector<ParticleRecord>& p) {  // the least gap between two surfaces
+    double m = HUGE_VAL;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = i + 1; j < p.size(); ++j) {
+        const Vec3 d = p[j].x - p[i].x;
+        m = std::min(m, closestPoints({p[i].radius, p[i].aspect.value}, p[i].q, {p[j].radius, p[j].aspect.value}, p[j].q, d, d).gap);
+      }
+    return m;
+  };
+  SECTION("lattice, aligned")
+  {
+    pc.lattice = {true, {0, 0, 0}, {0.05, 0.05, 0.05}, 0.01, 0.0024, 1, 7};
+    const std::vector<ParticleRecord> p = initialParticles(pc, c);
+    REQUIRE(p.size() == 125);
+    for (const ParticleRecord& r : p) {
+      CHECK(r.radius == 0.0024);
+      CHECK(r.aspect.value == 2);
+      CHECK(norm(toSpace(r.q, {0, 0, 1}) - Vec3{1, 1, 0} / std::sqrt(2.0)) < 1e-14);
+    }
+    CHECK(apart(p) > 0);
+  }
+  SECTION("random, isotropic")
+  {
+    pc.random = {true, {0, 0, 0}, {0.05, 0.05, 0.05}, 0.06, 0.0015, 5};
+    pc.randomAxes = true;
+    const std::vector<ParticleRecord> p = initialParticles(pc, c);
+    const double v = Shape{0.0015, 2}.volume();
+    CHECK(std::fabs(p.size() * v / 1.25e-4 - 0.06) < v / 1.25e-4);
+    double meanAz = 0;
+    for (const ParticleRecord& r : p) meanAz += std::fabs(toSpace(r.q, {0, 0, 1}).z) / p.size();
+    INFO(p.size() << " spheroids, mean |axis . z| " << meanAz);
+    CHECK(std::fabs(meanAz - 0.5) < 3 * 0.29 / std::sqrt(double(p.size())));  // uniform on [0, 1]: sd 0.29
+    CHECK(apart(p) > 0);
+  }
 }
 
 TEST_CASE("Dense packing: solid fraction beyond random addition, no contact, periodic images, bidisperse", "[dem]")

@@ -50,9 +50,10 @@ struct ParticleConfig {
   SingleInput single;
   double radius = 1e-3;       // -particle_radius [m] (single particle, lattice/random default)
   double density = 2500;      // -particle_density [kg/m^3] (single, lattice, random)
-  bool spheroid = false;      // -particle_shape spheroid (single particle)
+  bool spheroid = false;      // -particle_shape spheroid (the single particle, a lattice's, random ones)
   double aspect = 1;          // -particle_aspect c/a
   Vec3 axis{0, 0, 1};         // -particle_axis: initial symmetry axis
+  bool randomAxes = false;    // -particle_orientation random: generated spheroids' axes uniform on the sphere
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
   bool allFixed = false;      // -particles_fixed: every particle held in place (forces still measured)
   ContactConfig contact;
