@@ -130,6 +130,10 @@ set_tests_properties(case_jeffery_start PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" P
 add_test(NAME case_spheroid_settling COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spheroid_settling.py $<TARGET_FILE:vpsolve>
          ${VP_CASES}/spheroid_settling.opts ${CMAKE_CURRENT_BINARY_DIR}/case_spheroid_settling)
 set_tests_properties(case_spheroid_settling PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 300)
+# The shipped spheroid sediment: many lubricated, touching spheroids come to rest.
+add_test(NAME case_spheroid_sediment COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spheroid_sediment.py $<TARGET_FILE:vpsolve>
+         ${VP_CASES}/spheroid_sediment.opts ${CMAKE_CURRENT_BINARY_DIR}/case_spheroid_sediment)
+set_tests_properties(case_spheroid_sediment PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 300)
 
 # Time-series rows every -series_every steps and at the last step.
 vp_case_run(series_every 2 --steps 10,20,25 -- $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
