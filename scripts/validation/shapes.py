@@ -16,13 +16,16 @@
   pair: drafting, kissing and tumbling of two prolate spheroids (aspect 2) in the liquid of the
         settling case, one 3 d_v above the other, against two spheres of the same volume: the
         centres' distance, the time they spend close, their tilt (about 12 minutes)
-usage: shapes.py [drag|jeffery|bounce|settling|pair|all] [--res N] [--reuse]
+  zigzag: an oblate spheroid (aspect 1/3, density ratio 1.5) at Galileo number 250, above the
+        threshold of secondary motions, released 5 degrees from flat: its tilt, spin and drift
+        (d_v/dx 10, a coarse demonstration; about 20 minutes)
+usage: shapes.py [drag|jeffery|bounce|settling|pair|zigzag|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
 
-what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling", "pair"), valued=("--res",))
+what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling", "pair", "zigzag"), valued=("--res",))
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
 reuse = "--reuse" in sys.argv
 RV = 0.126            # equal-volume radius (m) in the box of side 1
@@ -347,6 +350,46 @@ def pair():
                 "spheroid_pair.png")
 
 
+
+def zigzag():
+    """d_v = 4 mm (a = 2.884 mm, c = 0.961 mm: 4.8 cells thick at d_v/dx 10), density 1500 in 1000,
+    mu 2.24e-3: Ga = sqrt(0.5 g d_v^3) / nu = 250. Periodic sides 6 d_v, 160 mm tall, released at
+    rest at 145 mm with its axis 5 degrees from the vertical."""
+    out = os.path.join(scratch, "vp_val_shape_zigzag")
+    if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,0.16", "-grid_n", "60,60,400",
+                        "-bc_xlo", "periodic", "-bc_xhi", "periodic", "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000",
+                        "-fluid_mu", "0.00224", "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,0.145",
+                        "-particle_shape", "spheroid", "-particle_radius", "0.002884", "-particle_aspect", "0.3333333",
+                        "-particle_axis", "0.0872,0,0.9962", "-particle_density", "1500", "-contact_tc", "1e-3", "-dem_substeps", "20",
+                        "-time_cfl", "0.5", "-time_final", "1.2", "-track_particles", "all", "-output_dir", out, "-output_overwrite",
+                        "-output_dt", "0", "-monitor_every", "0"], check=True, stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
+    t = [float(r["time"]) for r in rows]
+    tilt, drift = [], []  # in the plane of the initial tilt (x, z): signed
+    for r in rows:
+        w, qx, qy, qz = (float(r[c]) for c in ("qw", "qx", "qy", "qz"))
+        ax, az = 2 * (qx * qz + w * qy), 1 - 2 * (qx * qx + qy * qy)
+        tilt.append(math.degrees(math.atan2(ax if az > 0 else -ax, abs(az))))
+        drift.append((float(r["x"]) - 0.012) / 0.004)
+    speed = [-float(r["vz"]) for r in rows]
+    late = [k for k in range(len(t)) if t[k] > 0.5]
+    crossings = [t[k] for k in late[1:] if tilt[k - 1] * tilt[k] < 0]
+    swing = [max(tilt[k] for k in late), min(tilt[k] for k in late)]
+    mean_speed = sum(speed[k] for k in late) / len(late)
+    period = 2 * (crossings[-1] - crossings[0]) / (len(crossings) - 1) if len(crossings) > 1 else float("nan")
+    print("zigzag: after 0.5 s the axis swings between %+.1f and %+.1f degrees, through the vertical at t = %s s (period %.2f s, "
+          "Strouhal f d_v / U = %.3f at the mean speed %.3f m/s, Re %.0f); drift along x %.2f d_v at the end" %
+          (swing[0], swing[1], ", ".join("%.3f" % c for c in crossings), period, 0.004 / (period * mean_speed), mean_speed,
+           mean_speed * 0.004 / 2.24e-6, drift[-1]), flush=True)
+    fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
+    axes[0].plot(t, tilt, label="axis from the vertical, in the x-z plane (deg)")
+    axes[0].axhline(0, color="0.7", lw=0.8)
+    axes[1].plot(t, drift, label="x drift")
+    time_panels(fig, axes, ("tilt (deg)", "horizontal drift along x / d_v"),
+                "Oblate spheroid (aspect 1/3) at Ga 250: a growing zigzag (d_v/dx 10, coarse)", "spheroid_zigzag.png")
+
+
 if what in ("drag", "all"):
     drag()
 if what in ("jeffery", "all"):
@@ -357,3 +400,5 @@ if what in ("settling", "all"):
     settling()
 if what in ("pair", "all"):
     pair()
+if what in ("zigzag", "all"):
+    zigzag()
