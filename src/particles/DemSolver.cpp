@@ -133,8 +133,9 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   if (!restart) computeForces(0);
 }
 
-// What the non-spheres can do so far (docs/shapes.md): contacts and the explicit squeeze, with walls
-// and with any particle.
+// What the non-spheres can do so far (docs/shapes.md): contacts and the explicit lubrication
+// (squeeze and tangential terms) with walls and any particle; not the implicit squeeze nor the
+// film's inertia.
 void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
 {
   if (lub_.model != LubModel::None && lub_.implicitSqueeze)
