@@ -133,7 +133,7 @@ set_tests_properties(case_spheroid_settling PROPERTIES ENVIRONMENT "${VP_MPI_ENV
 # The shipped spheroid sediment: many lubricated, touching spheroids come to rest.
 add_test(NAME case_spheroid_sediment COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_spheroid_sediment.py $<TARGET_FILE:vpsolve>
          ${VP_CASES}/spheroid_sediment.opts ${CMAKE_CURRENT_BINARY_DIR}/case_spheroid_sediment)
-set_tests_properties(case_spheroid_sediment PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 TIMEOUT 300)
+set_tests_properties(case_spheroid_sediment PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2 LABELS slow TIMEOUT 600)
 
 # Time-series rows every -series_every steps and at the last step.
 vp_case_run(series_every 2 --steps 10,20,25 -- $<TARGET_FILE:vpsolve> -options_file ${VP_DEM_DATA}/box.opts
