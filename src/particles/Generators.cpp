@@ -320,7 +320,7 @@ namespace {
 // none overlap, whatever the orientations), then each becomes a spheroid of the given equatorial
 // radius, aligned with -particle_axis or, with -particle_orientation random, turned uniformly.
 // A random packing's fraction is the spheroids': its bounding spheres' is larger by bound^3 / aspect.
-double boundOverEquator(const ParticleConfig& pc) { return std::max(pc.aspect, 1.0); }
+double boundOverEquator(const ParticleConfig& pc) { return Shape{1.0, pc.aspect}.boundingRadius(); }
 
 LatticeInput bounding(LatticeInput in, const ParticleConfig& pc)
 {

@@ -1,4 +1,5 @@
 #include "vp/particles/ParticleConfig.hpp"
+#include "vp/particles/Shape.hpp"
 #include "vp/interactions/ContactOptions.hpp"
 #include "vp/interactions/LubricationOptions.hpp"
 #include "vp/core/Error.hpp"
@@ -173,7 +174,7 @@ void ParticleConfig::validate() const
     if (!single.set && !lattice.set && !random.set)
       failOption("-particle_shape", "spheroid applies to the single particle (-particle_position), a lattice or random particles; "
                                     "a file gives shapes in its aspect and qw,qx,qy,qz columns, and -particles_packed grows spheres");
-    const double bound = std::max(aspect, 1.0);  // bounding radius over the equatorial one
+    const double bound = Shape{1.0, aspect}.boundingRadius();  // over the equatorial semi-axis
     if (lattice.set && 2 * bound * lattice.radius > lattice.spacing)
       failOption("-particles_lattice", "spacing " + formatNumber(lattice.spacing) + " must be >= the spheroids' longest axis " +
                                            formatNumber(2 * bound * lattice.radius));
