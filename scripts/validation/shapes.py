@@ -390,15 +390,7 @@ def zigzag():
                 "Oblate spheroid (aspect 1/3) at Ga 250: a growing zigzag (d_v/dx 10, coarse)", "spheroid_zigzag.png")
 
 
-if what in ("drag", "all"):
-    drag()
-if what in ("jeffery", "all"):
-    jeffery()
-if what in ("bounce", "all"):
-    bounce()
-if what in ("settling", "all"):
-    settling()
-if what in ("pair", "all"):
-    pair()
-if what in ("zigzag", "all"):
-    zigzag()
+for name, study in (("drag", drag), ("jeffery", jeffery), ("bounce", bounce), ("settling", settling), ("pair", pair),
+                    ("zigzag", zigzag)):
+    if what in (name, "all"):
+        study()
