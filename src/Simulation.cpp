@@ -60,6 +60,10 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_, restartParticles, true);
   else if (particleCfg_.any())
     dem_ = std::make_unique<DemSolver>(grid_, cfg_, particleCfg_);
+  if (penalization_ && particleCfg_.lubrication.replace) {
+    patches_ = std::make_unique<LubricationPatches>(particleCfg_.lubrication, domainWalls(cfg_));
+    dem_->setPatches(patches_.get());
+  }
   fluid_ = std::make_unique<Projection>(grid_, cfg_, rc.solvers, penalization_ && rc.penalization.weightedProjection);
   if (restart)
     restore(*restart);
@@ -207,12 +211,13 @@ void Simulation::buildMask(double dt)
   const double rate = std::max(fluid_->stats().maxRate, stepControl_.particleRate(dem_.get(), grid_.comm()));
   penalizationFloor_ = std::max(penalizationFloor_, 20 / stepControl_.motionStep(0.5, rate));
   penalization_->build(dem_->particles(), dt, penalizationFloor_);
+  if (patches_) patches_->find(dem_->particles());
 }
 
 void Simulation::penalize()
 {
   StageScope stage(Stage::Penalization);
-  penalization_->forces(dem_->particles(), fluid_->velocity(), hydroSums_);
+  penalization_->forces(dem_->particles(), fluid_->velocity(), hydroSums_, patches_.get());
 }
 
 void Simulation::hydroForce(double dt)

@@ -75,6 +75,7 @@ private:
   std::unique_ptr<FieldWriter> fields_;
   std::unique_ptr<DemSolver> dem_;                 // when there are particles
   std::unique_ptr<Penalization> penalization_;     // particles in a fluid
+  std::unique_ptr<LubricationPatches> patches_;    // -lub_coupling replace
   std::vector<double> hydroSums_;
   std::unique_ptr<ParticleWriter> particleWriter_;
   // The time series, tracked particles (with particles), probes (-probe), the collapse monitor

@@ -709,6 +709,8 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
     tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller).
+    lub "replace": the resolved run with -lub_coupling replace (patches of r0 reduced radii from
+    `cells`), the resolved force plus the LLCM's together.
     `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre).
     `box`: the cubic box's side in d (the normal mode's resolved runs; 4 elsewhere)."""
     n = box * r
@@ -719,11 +721,14 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (box, box, box), "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
               "-contact_roughness", 1e-4] + bc
-    if lub == "none":
+    if lub in ("none", "replace"):
         dt = 0.5 / r ** 2 / MU
         part = ["-particles_file", pair_file(out + "_in", eps, speed, align / r), "-particles_fixed"] if one is None else one
-        rows = run(out, *common, *part, *CASE_FLUID, "-time_dt", dt, "-time_final", RELAX, "-lub_model", "none", case="none")
-        return calib_value(mode, rows[-1], speed)
+        film = ["-lub_model", "none"] if lub == "none" else \
+            ["-lub_model", "llcm", "-lub_coupling", "replace", "-lub_activation_cells", cells, "-lub_llcm_r0", r0]
+        rows = run(out, *common, *part, *CASE_FLUID, "-time_dt", dt, "-time_final", RELAX, *film, case="none")
+        total = calib_value(mode, rows[-1], speed)
+        return total if lub == "none" else total + calib_value(mode, rows[-1], speed, resolved=False)
     # The correction at the final gap: the same spheres placed there (DEM only, one evaluation).
     part = one
     if one is None:

@@ -219,12 +219,13 @@ void Penalization::forCovered(const ParticleStore& s, F&& f) const
   }
 }
 
-void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums)
+void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums, const LubricationPatches* patches)
 {
   sums.assign(kHydroSums * s.size(), 0.0);
   const double dV = grid_.cellVolume();
   ReadValues a(uStar), us(us_);
   forCovered(s, [&](PetscInt at, int c, int p, const Vec3& r, double chi) {
+    if (patches && patches->any(p) && patches->covers(p, r)) return;  // the analytic force stands for it
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
     f[c] = rho_ * chi * stepLambda_ * (a[at] - us[at]) * dV;

@@ -3,7 +3,7 @@
 
 namespace vp {
 
-PairForce llcmForce(const PairState& s, double region)
+PairForce llcmForce(const PairState& s, double region, bool openEdge)
 {
   const Vec3& n = s.normal;
   const double R = s.reducedRadius();
@@ -17,7 +17,7 @@ PairForce llcmForce(const PairState& s, double region)
   const double J3 = J1 - x;
 
   PairForce f = blcmForce(s);
-  f.forceI *= x * x; // squeeze with p(r0) = 0
+  f.forceI *= openEdge ? x : x * x;  // squeeze with the inner pressure at r0, or with p(r0) = 0
 
   const double kI = s.curvatureI(), kJ = s.curvatureJ();
   const Vec3 sI = s.tangential(s.surfaceVelocityI());

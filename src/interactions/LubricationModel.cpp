@@ -41,6 +41,9 @@ void LubricationParams::resolveDefaults(double cellSize, bool coupled, double sa
         << "], got " << shearActivationCells;
   else if (!(llcmRegion > 0 && std::isfinite(llcmRegion)))
     msg << "option -lub_llcm_r0: must be > 0, got " << llcmRegion;
+  else if (replace && !coupled)
+    msg << "option -lub_coupling: replace takes the gap patch out of the resolved force: it needs a fluid (drop -fluid_off "
+           "or use add)";
   if (!msg.str().empty()) throw InputError(msg.str());
 }
 
@@ -54,42 +57,42 @@ void LubricationParams::checkRadius(double rmax) const
   throw InputError(msg.str());
 }
 
-PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s)
+PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch)
 {
   switch (model) {
   case LubModel::Blcm: return blcmForce(s);
-  case LubModel::Llcm: return llcmForce(s, llcmRegion);
+  case LubModel::Llcm: return llcmForce(s, llcmRegion, patch);
   default: return {};
   }
 }
 
 namespace {
 
-// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion.
-PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double hAct, double a)
+// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion; a replaced pair: the first term.
+PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double hAct, double a, bool replaced)
 {
   PairState at = s, act = s;
   at.gap = std::max(s.gap, p.saturation * a);
   act.gap = hAct;
-  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
-  f -= lubricationModelForce(p.model, p.llcmRegion, act);
+  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at, replaced);
+  if (!replaced) f -= lubricationModelForce(p.model, p.llcmRegion, act);
   return f;
 }
 
 } // namespace
 
-PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale)
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale, bool replaced)
 {
   const double a = scale > 0 ? scale : std::min(s.radiusI, s.radiusJ);
   const double hAct = p.activationGap(a);
-  if (p.model == LubModel::None || !(s.gap < hAct) || s.gap <= contactGap) return {};
+  if (p.model == LubModel::None || !(s.gap < hAct || replaced) || s.gap <= contactGap) return {};
 
   // The squeeze: the normal relative motion alone.
   PairState squeeze = s;
   squeeze.velocityI = dot(s.velocityI, s.normal) * s.normal;
   squeeze.velocityJ = dot(s.velocityJ, s.normal) * s.normal;
   squeeze.angularVelocityI = squeeze.angularVelocityJ = Vec3{};
-  PairForce f = unresolvedPart(p, squeeze, hAct, a);
+  PairForce f = unresolvedPart(p, squeeze, hAct, a, replaced);
   if (s.slipWall) {
     // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
     // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
@@ -104,11 +107,11 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
     f.forceI -= (0.6 * M_PI * s.density * a * a * U * U * std::log(hAct / h)) * s.normal;
   }
   const double hShear = p.shearActivationGap(a);
-  if (s.gap < hShear && p.saturation * a < hShear) {
+  if (replaced || (s.gap < hShear && p.saturation * a < hShear)) {
     PairState shear = s;
     shear.velocityI = s.tangential(s.velocityI);
     shear.velocityJ = s.tangential(s.velocityJ);
-    f += unresolvedPart(p, shear, hShear, a);
+    f += unresolvedPart(p, shear, hShear, a, replaced);
   }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;
@@ -121,16 +124,16 @@ double lubricationResistance(const LubricationParams& p, const PairState& geomet
   PairState s = geometry;
   const double a = std::min(s.radiusI, s.radiusJ);
   s.gap = std::max(p.saturation * a, contactGap * (1 + 1e-12));
-  return squeezeResistance(p, s, contactGap);
+  return squeezeResistance(p, s, contactGap, p.replace);  // a replaced pair's whole force is the larger
 }
 
-double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap)
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, bool replaced)
 {
   PairState s = state;
   s.velocityI = s.normal;  // unit approach speed
   s.velocityJ = s.angularVelocityI = s.angularVelocityJ = Vec3{};
   s.density = 0;  // the resistance of the viscous squeeze alone
-  return std::fabs(dot(lubricationForce(p, s, contactGap).forceI, s.normal));
+  return std::fabs(dot(lubricationForce(p, s, contactGap, 0, replaced).forceI, s.normal));
 }
 
 } // namespace vp

@@ -31,6 +31,11 @@ LubricationParams readLubricationOptions()
                      "Add the liquid's inertia in the gap to a sphere's squeeze at a no-slip wall: the O(Re) term "
                      "(3/5) pi rho a^2 U^2 ln(h_act/h) of the lubrication flow, repulsive (Cox & Brenner 1967; "
                      "docs/lubrication.md)");
+  p.replace = o.choice("-lub_coupling", {"add", "replace"}, 0,
+                       "How the correction meets the resolved force: add (the unresolved part F(h) - F(h_act) on top of the "
+                       "whole resolved force) or replace (the seed's local LLCM: below h_act the resolved force over each gap's "
+                       "disk r < r0 is removed and the whole LLCM force over that disk is applied; needs -lub_model llcm, "
+                       "-lub_llcm_r0 <= 1; docs/lubrication.md)") == 1;
   if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
@@ -56,6 +61,14 @@ LubricationParams readLubricationOptions()
     failOption("-lub_inertia", "corrects the lubrication's squeeze: it needs -lub_model blcm or llcm");
   if (!(p.llcmRegion > 0 && std::isfinite(p.llcmRegion)))
     failOption("-lub_llcm_r0", "must be > 0", p.llcmRegion);
+  if (p.replace && p.model != LubModel::Llcm)
+    failOption("-lub_coupling", "replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm");
+  if (p.replace && p.llcmRegion > 1)
+    failOption("-lub_llcm_r0", "with -lub_coupling replace the patch r0 = R0 R must fit within the sphere (R0 <= 1)", p.llcmRegion);
+  if (p.replace && p.implicitSqueeze)
+    failOption("-lub_integration", "implicit takes the added squeeze; with -lub_coupling replace use explicit");
+  if (p.replace && p.inertia)
+    failOption("-lub_inertia", "is the film's inertia below h_act added to the resolved force: not with -lub_coupling replace");
   return p;
 }
 

@@ -142,6 +142,8 @@ void DemSolver::checkShapes(const std::vector<ParticleRecord>& all) const
     failOption("-lub_integration", "implicit is for spheres: the squeeze of a spheroid is explicit (use explicit)");
   if (lub_.model != LubModel::None && lub_.inertia)
     failOption("-lub_inertia", "the film's inertia is that of a sphere at a wall: not for spheroids (drop the option)");
+  if (lub_.replace)
+    failOption("-lub_coupling", "replace takes the gap patches of spheres: use add with spheroids");
   const double h = std::max({grid_.h(0), grid_.h(1), grid_.h(2)});
   for (const ParticleRecord& r : all) {
     const Shape g{r.radius, r.aspect.value};
@@ -234,7 +236,8 @@ void DemSolver::computeForces(double dt)
     // force of both stays excluded and the correction stands for the film below that gap.
     const bool leaving = handOff_.pairLeaving(s, i, j, n, gap, P.departure[k]);
     // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
-    const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving);
+    const bool replaced = lubricated && patches_ && patches_->replaced(s.id[i], s.id[j]);
+    const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving || replaced);
     std::uint8_t impact = 0;
     if (!touching && !lubricating) {
       P.departure[k] = 0;
@@ -272,7 +275,7 @@ void DemSolver::computeForces(double dt)
       st.angularVelocityJ = s.w[j];
       st.viscosity = mu_;
       const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, amin) : lub_;
-      PairForce l = lubricationForce(film, st, rough * (s.radius[i] + s.radius[j]));
+      PairForce l = lubricationForce(film, st, rough * (s.radius[i] + s.radius[j]), 0, replaced);
       if (lubWatch_) watchLubrication(st, rough * (s.radius[i] + s.radius[j]), s.invMass[i] + s.invMass[j]);
       if (lub_.implicitSqueeze) {
         // The squeeze c (dh/dt) n leaves the explicit force: each sphere takes it implicitly (substep).
@@ -340,7 +343,8 @@ void DemSolver::computeForces(double dt)
         // (docs/collisions.md), so the correction stands for the film below the departure gap.
         const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, n, dist - a);
         departing = departing || leaving;
-        if (overlap <= 0 && (dist < lubReach || (leaving && lubricated))) {  // hand-off: no lubrication in contact
+        const bool replaced = lubricated && patches_ && patches_->replaced(s.id[i], -1 - f);
+        if (overlap <= 0 && (dist < lubReach || ((leaving || replaced) && lubricated))) {  // hand-off: no lubrication in contact
           PairState st;
           st.normal = -n;  // from the centre towards the wall
           st.gap = dist - a;
@@ -353,7 +357,7 @@ void DemSolver::computeForces(double dt)
           st.density = rho_;
           st.slipWall = wall.slip;
           const LubricationParams& film = leaving ? handOff_.departureFilm(lub_, a) : lub_;
-          PairForce l = lubricationForce(film, st, 2 * rough * a);
+          PairForce l = lubricationForce(film, st, 2 * rough * a, 0, replaced);
           if (lubWatch_) watchLubrication(st, 2 * rough * a, s.invMass[i]);
           if (lub_.implicitSqueeze) {
             const double c = squeezeResistance(film, st, 2 * rough * a);

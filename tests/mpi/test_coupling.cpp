@@ -3,6 +3,7 @@
 #include "vp/Simulation.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -209,4 +210,62 @@ TEST_CASE("Without particles a run is bitwise the fluid core's: the coupling cos
   VecEqual(sim.fluid().pressure(), core.pressure(), &sameP);
   CHECK(sameU);
   CHECK(sameP);
+}
+
+TEST_CASE("Replaced gap patches: a pair settling near the floor the same on 1, 2 and 3 ranks, its resolved force changed",
+          "[mpi][coupling][lub]")
+{
+  int size, rank;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  // Two spheres 0.12 cells apart and 0.2 cells above the floor, straddling the subdomain
+  // boundaries: with -lub_coupling replace every rank holding their faces must leave out the same
+  // patches (ghosts' included), and the DEM give the same pairs the whole force.
+  const std::string file = "replace_pair_" + std::to_string(size) + ".csv";
+  if (rank == 0) {
+    FILE* f = std::fopen(file.c_str(), "w");
+    std::fprintf(f, "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n0,0.0295,0.039,0.011,0.01,1127,0,0,0,0,0,0\n"
+                    "1,0.0501,0.039,0.011,0.01,1127,0,0,0,0,0,0\n");
+    std::fclose(f);
+  }
+  MPI_Barrier(PETSC_COMM_WORLD);
+  Config c = closedBox({16, 16, 24}, {0.08, 0.08, 0.12});
+  c.fluid.rho = 985;
+  c.fluid.mu = 0.142;
+  c.gravity = {0, 0, -9.781};
+  c.time.dt = 0.002;
+  auto run = [&](MPI_Comm comm, const char* coupling) {
+    ScopedOptions o({{"-particles_file", file}, {"-contact_tc", "0.04"}, {"-lub_model", "llcm"}, {"-lub_coupling", coupling},
+                     {"-lub_activation_cells", "1"}, {"-dem_substeps", "20"}, {"-pressure_ksp_rtol", "1e-13"},
+                     {"-velocity_ksp_rtol", "1e-13"}});
+    Simulation sim(comm, RunConfig(c));
+    for (int k = 0; k < 8; ++k) sim.advance(c.time.dt);
+    return particleState(comm, sim);
+  };
+  std::vector<std::vector<double>> runs;
+  for (int s = 1; s <= size; ++s) {
+    MPI_Comm sub;
+    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
+    if (sub != MPI_COMM_NULL) {
+      runs.push_back(run(sub, "replace"));
+      MPI_Comm_free(&sub);
+    }
+  }
+  const std::vector<double> added = run(PETSC_COMM_WORLD, "add");
+  bool ok = true;
+  if (rank == 0) {
+    INFO("1 rank, replace: z = " << runs[0][2] << ", w = " << runs[0][5] << ", F = " << runs[0][6] << ", " << runs[0][8]
+                                 << "; add: F = " << added[6] << ", " << added[8]);
+    CHECK(runs[0][5] < 0);  // it is settling
+    CHECK(std::fabs(runs[0][8] - added[8]) > 1e-3 * std::fabs(added[8]));  // the patches left out
+    for (std::size_t s = 1; s < runs.size(); ++s)
+      for (int m = 0; m < 9; ++m) {
+        const double scale = m < 3 ? 0.1 : (m < 6 ? std::fabs(runs[0][5]) : std::fabs(runs[0][8]));
+        INFO("ranks " << s + 1 << ", entry " << m << ": " << runs[s][m] << " vs " << runs[0][m]);
+        const bool same = std::fabs(runs[s][m] - runs[0][m]) <= 1e-6 * scale;
+        ok = ok && same;
+        CHECK(same);
+      }
+  }
+  REQUIRE(allRanks(PETSC_COMM_WORLD, ok));
 }

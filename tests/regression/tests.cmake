@@ -455,3 +455,12 @@ vp_bad_input(lub_integration_without_model 1 "option -lub_integration: implicit 
              -lub_integration implicit)
 vp_bad_input(lub_inertia_without_model 1 "option -lub_inertia: corrects the lubrication's squeeze: it needs -lub_model blcm or llcm"
              -lub_inertia)
+vp_bad_input(lub_replace_model 1 "option -lub_coupling: replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm"
+             -lub_model blcm -lub_coupling replace)
+vp_bad_input(lub_replace_wide_patch 1 "option -lub_llcm_r0: with -lub_coupling replace the patch r0 = R0 R must fit within the sphere \\(R0 <= 1\\), got 2"
+             -lub_model llcm -lub_coupling replace -lub_llcm_r0 2)
+vp_bad_input(lub_replace_without_fluid 1 "option -lub_coupling: replace takes the gap patch out of the resolved force: it needs a fluid"
+             -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particle_radius 0.002 -lub_model llcm
+             -lub_activation 0.05 -lub_coupling replace)
+vp_bad_input(spheroid_lub_replace 1 "option -lub_coupling: replace takes the gap patches of spheres: use add with spheroids"
+             -options_file ${VP_CASES}/spheroid_settling.opts -lub_model llcm -lub_coupling replace)

@@ -63,6 +63,14 @@ TEST_CASE("Lubrication options: bad values name the option and the range", "[lub
   CHECK(errorOf({{"-lub_llcm_r0", "0"}}) == "option -lub_llcm_r0: must be > 0, got 0");
   CHECK(errorOf({{"-lub_inertia", "true"}}) ==
         "option -lub_inertia: corrects the lubrication's squeeze: it needs -lub_model blcm or llcm");
+  CHECK(errorOf({{"-lub_coupling", "swap"}}) == "option -lub_coupling: unknown value 'swap' (valid: add, replace)");
+  CHECK(errorOf({{"-lub_coupling", "replace"}}) ==
+        "option -lub_coupling: replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm");
+  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "blcm"}}).rfind("option -lub_coupling: replace applies", 0) == 0);
+  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_llcm_r0", "1.5"}}) ==
+        "option -lub_llcm_r0: with -lub_coupling replace the patch r0 = R0 R must fit within the sphere (R0 <= 1), got 1.5");
+  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_integration", "implicit"}}) ==
+        "option -lub_integration: implicit takes the added squeeze; with -lub_coupling replace use explicit");
   CHECK(errorOf({{"-lub_shear_activation_cells", "-0.1"}}).rfind("option -lub_shear_activation_cells: must be >= 0", 0) == 0);
   CHECK(errorOf({{"-lub_activation", "0.05"}, {"-lub_shear_activation_cells", "0.05"}}) ==
         "option -lub_shear_activation_cells: give it with -lub_activation_cells, not -lub_activation, got 0.05");
@@ -87,6 +95,12 @@ TEST_CASE("Lubrication defaults resolved from the grid, the fluid and the roughn
   r.activation = 0.01;
   CHECK_THROWS_WITH(r.resolveDefaults(1e-4, true, 0.05), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
   CHECK(r.activationGap(2e-3) == Approx(2e-5).epsilon(1e-15));  // eps_act given: per pair radius
+  LubricationParams u;
+  u.model = LubModel::Llcm;
+  u.replace = true;
+  u.activationCells = 1;
+  CHECK_THROWS_WITH(u.resolveDefaults(1e-4, false, 4e-4), Catch::StartsWith("option -lub_coupling: replace takes the gap patch "
+                                                                           "out of the resolved force: it needs a fluid"));
   LubricationParams t;
   t.model = LubModel::Llcm;
   t.activationCells = 1;

@@ -8,6 +8,7 @@
 // a - |x - X| over -penalization_width cells centred on the surface (a face's chi varies smoothly
 // as a sphere moves, so forces do not jump when faces change sides); sharp = 1 inside, 0 outside.
 #include "vp/core/Config.hpp"
+#include "vp/coupling/LubricationPatches.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/particles/PairStress.hpp"
 #include "vp/particles/ParticleStore.hpp"
@@ -47,7 +48,8 @@ public:
   double lambda() const { return stepLambda_; }  // of the step last built
   // sums (kHydroSums per particle) resized and zeroed, then the force and torque of the
   // penalization on each particle, rho chi lambda (u* - u_s) dV, from the predicted velocity u*.
-  void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums);
+  // patches (-lub_coupling replace): the faces in a particle's gap patches are left out.
+  void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums, const LubricationPatches* patches = nullptr);
   // From enableStresslets on, forces() also sums the first moment of the force density on the
   // particles whose centre lies in lo <= z <= hi: sum over them of the integral of
   // sym((x - x_p) (x) f) dV, f the force density the fluid exerts on them (the particles' stresslet,

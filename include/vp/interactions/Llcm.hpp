@@ -11,10 +11,13 @@
 //            F_i += -(1/a_i - 1/a_j) P - S
 //            T_i  =  a_i n x (P/R - S),     T_j = -a_j n x (P/R + S)
 // Raw model at s.gap (no activation); T_i + T_j = (a_i + a_j) n x F_i exactly.
+// openEdge: the squeeze as the inner solution's pressure p = 3 mu R (dh/dt) / h(r)^2 integrated over
+// the disk, F_blcm (1 - h/H0), its pressure at r0 left as it is: the force on a gap patch whose
+// resolved force is taken out (-lub_coupling replace), where the flow outside the disk is resolved.
 #include "vp/interactions/Lubrication.hpp"
 
 namespace vp {
 
-PairForce llcmForce(const PairState& s, double region);
+PairForce llcmForce(const PairState& s, double region, bool openEdge = false);
 
 } // namespace vp

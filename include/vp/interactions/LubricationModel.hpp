@@ -7,7 +7,10 @@
 // normal relative motion) takes h_act, its tangential part (sliding, rolling) the smaller h_act,t,
 // since the grid resolves the logarithmic shear singularity to smaller gaps than the squeeze.
 // Zero once the surfaces touch (h <= h_contact, the roughness gap): the contact model alone acts
-// there. A free-slip wall gets a quarter of the squeeze and no
+// there. With -lub_coupling replace a pair closer than h_act at the start of a fluid step has the
+// resolved force over its gap patch removed (coupling/LubricationPatches.hpp) and gets the whole
+// F_llcm(max(h, h_sat)) over that disk instead (its squeeze with the inner pressure at the disk's
+// edge, Llcm.hpp), whatever its gap during the step. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
@@ -47,6 +50,9 @@ struct LubricationParams {
   // -lub_inertia: the O(Re) squeeze of a sphere approaching or leaving a no-slip wall (the liquid's
   // inertia in the gap; docs/lubrication.md), from the state's density.
   bool inertia = false;
+  // -lub_coupling replace: the seed's local replacement of the resolved force over the gap patch
+  // (coupling/LubricationPatches.hpp) instead of the added unresolved part.
+  bool replace = false;
 
   // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
   // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a
@@ -68,14 +74,18 @@ private:
   bool resolved_ = false;
 };
 
-// Raw model force at the state's gap (no activation or saturation).
-PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s);
+// Raw model force at the state's gap (no activation or saturation); patch: the LLCM's open-edge
+// squeeze of a replaced gap patch (Llcm.hpp).
+PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch = false);
 
 // The correction a pair loop adds for a sphere-sphere or sphere-wall pair (defaults resolved).
 // contactGap: the surface gap at which the contact model takes over (roughness). scale: the length
 // the activation and saturation gaps are fractions of; 0: the smaller radius (a spheroid gives its
 // equatorial semi-axis while its radii are those of the gap's curvatures).
-PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale = 0);
+// replaced: the pair's gap patch was taken out of the resolved force (-lub_coupling replace): the
+// whole model force at max(h, h_sat), at any gap.
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale = 0,
+                           bool replaced = false);
 
 // Largest normal resistance c = |F_n| / U_n the correction reaches for this pair geometry (at
 // max(h_sat, contactGap)); an explicit dashpot c on a reduced mass m is stable for dt < m / c with
@@ -83,6 +93,6 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
 double lubricationResistance(const LubricationParams& p, const PairState& geometry, double contactGap);
 // The normal resistance c = |F_n| / U_n of the correction at the state's own gap: the squeeze force
 // on i is c (dh/dt) n, n from i to j (-lub_integration implicit takes it out of the explicit force).
-double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap);
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, bool replaced = false);
 
 } // namespace vp

@@ -5,6 +5,7 @@
 // diagnostics() for diagnostics.csv. With -fluid_off, dt is the DEM step and fhyd/thyd are ignored.
 #include "vp/core/Config.hpp"
 #include "vp/core/StateArchive.hpp"
+#include "vp/coupling/LubricationPatches.hpp"
 #include "vp/grid/Grid.hpp"
 #include "vp/interactions/ContactModel.hpp"
 #include "vp/particles/CellBuckets.hpp"
@@ -72,6 +73,9 @@ public:
   double localKineticEnergy() const { return std::max(kineticEnergy_, 0.0); }
   // This rank's deepest contact since the last call (the health check reads it once per step).
   OverlapRecord takeLargestOverlap();
+  // -lub_coupling replace: the pairs whose gap patches the step's resolved force left out get the
+  // whole model force (coupling/LubricationPatches.hpp); found by the coupling each fluid step.
+  void setPatches(const LubricationPatches* patches) { patches_ = patches; }
 
 private:
   void setUp(const std::vector<ParticleRecord>& all, bool restart);
@@ -140,6 +144,7 @@ private:
   void relax(std::size_t i, double half, Vec3& v, Vec3& w) const;
   bool hydro_;             // a fluid sets fhyd/thyd (without one the kicks skip them)
   double drag_;                     // -dem_implicit_drag
+  const LubricationPatches* patches_ = nullptr;
   ContactHandOff handOff_;          // -contact_hydro and its departure and history (keep in DEM-only runs)
   std::vector<int> activeWalls_;
   Vec3 wallLo_, wallHi_;   // wall planes per axis (+-infinity on periodic axes)

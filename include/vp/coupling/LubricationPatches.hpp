@@ -1,0 +1,57 @@
+#pragma once
+// The gap patches of the local lubrication coupling (-lub_coupling replace, after the seed's LLCM:
+// the resolved surface forces over the gap are replaced by the analytic inner force). At the start
+// of every fluid step, each pair of spheres and each sphere and wall closer than the activation gap
+// h_act gives both its surfaces a patch: the disk r < r0 = R0 R (the LLCM's region, R the reduced
+// radius, a at a wall) around the line of centres, on the side facing the gap. The penalization
+// force of the faces a sphere owns within its patches' cylinders is left out of its resolved force
+// (Penalization::forces), and the DEM applies the whole LLCM force over the disk to those pairs for
+// the whole step (LubricationModel.hpp), whatever their gap during it. Found from the positions
+// every rank holds, owned and ghost spheres alike: every rank that holds faces of a sphere or
+// computes one of its pairs agrees on its patches.
+#include "vp/interactions/LubricationModel.hpp"
+#include "vp/particles/CellBuckets.hpp"
+#include "vp/particles/ParticleStore.hpp"
+#include "vp/particles/Walls.hpp"
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace vp {
+
+class LubricationPatches {
+public:
+  LubricationPatches(const LubricationParams& lub, const std::array<Wall, 6>& walls) : lub_(lub), walls_(walls) {}
+
+  // The patches of the particles' present positions (local spheres, owned and ghost).
+  void find(const ParticleStore& s);
+  // Whether the point r (from local sphere p's centre) lies in one of p's patch cylinders.
+  bool covers(std::size_t p, const Vec3& r) const
+  {
+    for (std::size_t k = begin_[p]; k < begin_[p + 1]; ++k) {
+      const double along = dot(r, patches_[k].n);
+      if (along > 0 && dot(r, r) - along * along < patches_[k].r0Squared) return true;
+    }
+    return false;
+  }
+  bool any(std::size_t p) const { return begin_[p] < begin_[p + 1]; }
+  // Whether the pair of these ids (a wall as -1 - face) had its patches taken out at the step's start.
+  bool replaced(std::int64_t idI, std::int64_t idJ) const;
+  std::size_t pairs() const { return replaced_.size(); }
+
+private:
+  struct Patch {
+    std::size_t particle;
+    Vec3 n;            // unit, from the centre towards the gap
+    double r0Squared;  // [m^2]
+  };
+  LubricationParams lub_;
+  std::array<Wall, 6> walls_;
+  CellBuckets buckets_;
+  std::vector<Patch> patches_;                                   // sorted by particle
+  std::vector<std::size_t> begin_{0};                            // per local particle, into patches_
+  std::vector<std::pair<std::int64_t, std::int64_t>> replaced_;  // (lower id, higher id), sorted
+};
+
+} // namespace vp

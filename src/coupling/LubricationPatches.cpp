@@ -1,0 +1,55 @@
+#include "vp/coupling/LubricationPatches.hpp"
+#include <algorithm>
+
+namespace vp {
+
+void LubricationPatches::find(const ParticleStore& s)
+{
+  patches_.clear();
+  replaced_.clear();
+  const std::size_t n = s.size();
+  const double region2 = lub_.llcmRegion * lub_.llcmRegion;
+  auto add = [&](std::size_t p, const Vec3& normal, double R) { patches_.push_back({p, normal, region2 * R * R}); };
+  double rmax = 0;
+  Vec3 lo = n ? s.x[0] : Vec3{}, hi = lo;
+  for (std::size_t p = 0; p < n; ++p) {
+    rmax = std::max(rmax, s.radius[p]);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], s.x[p][d]);
+      hi[d] = std::max(hi[d], s.x[p][d]);
+    }
+    for (int f = 0; f < 6; ++f) {
+      const Wall& w = walls_[f];
+      const double a = s.radius[p];
+      if (!w.active || !(w.distance(s.x[p]) - a < lub_.activationGap(a))) continue;
+      add(p, -1.0 * w.normal(), a);
+      replaced_.push_back({-1 - f, s.id[p]});  // a wall's key sorts first
+    }
+  }
+  if (n > 1) {
+    // Every local pair, ghosts with ghosts too (all taken as owned by the search).
+    buckets_.build(s.x, n, lo, hi, 2 * rmax + lub_.activationGap(rmax));
+    buckets_.forEachCandidate(n, [&](std::size_t i, std::size_t j) {
+      const Vec3 d = s.x[j] - s.x[i];
+      const double r = norm(d), ai = s.radius[i], aj = s.radius[j];
+      if (!(r - ai - aj < lub_.activationGap(std::min(ai, aj))) || s.id[i] == s.id[j]) return;
+      const double R = ai * aj / (ai + aj);
+      add(i, (1 / r) * d, R);
+      add(j, (-1 / r) * d, R);
+      replaced_.push_back({std::min(s.id[i], s.id[j]), std::max(s.id[i], s.id[j])});
+    });
+  }
+  std::stable_sort(patches_.begin(), patches_.end(), [](const Patch& a, const Patch& b) { return a.particle < b.particle; });
+  begin_.assign(n + 1, 0);
+  for (const Patch& q : patches_) ++begin_[q.particle + 1];
+  for (std::size_t p = 0; p < n; ++p) begin_[p + 1] += begin_[p];
+  std::sort(replaced_.begin(), replaced_.end());
+}
+
+bool LubricationPatches::replaced(std::int64_t idI, std::int64_t idJ) const
+{
+  const std::pair<std::int64_t, std::int64_t> key{std::min(idI, idJ), std::max(idI, idJ)};
+  return std::binary_search(replaced_.begin(), replaced_.end(), key);
+}
+
+} // namespace vp

@@ -1,0 +1,114 @@
+// -lub_coupling replace: the gap patches (coupling/LubricationPatches.hpp) and the whole open-edge
+// LLCM force of a replaced pair (interactions/LubricationModel.hpp, Llcm.hpp).
+#include "../support/DemFixtures.hpp"
+#include "vp/coupling/LubricationPatches.hpp"
+#include "vp/interactions/Blcm.hpp"
+#include "vp/interactions/Llcm.hpp"
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace vp;
+using vp::test::sphere;
+
+namespace {
+
+// The LLCM replaced below one cell of 0.1 m, patches of R0 = 1.
+LubricationParams replacing()
+{
+  LubricationParams p;
+  p.model = LubModel::Llcm;
+  p.replace = true;
+  p.activationCells = 1;
+  p.resolveDefaults(0.1, true, 4e-4);
+  return p;
+}
+
+std::array<Wall, 6> floorOnly()
+{
+  std::array<Wall, 6> w;
+  w[4].active = true;  // z low: face 4, normal +z
+  w[4].axis = 2;
+  return w;
+}
+
+} // namespace
+
+TEST_CASE("Gap patches: each surface's disk facing a gap closer than h_act, ghosts included", "[lub]")
+{
+  ParticleStore s;
+  s.append(sphere(0, {0, 0, 1.05}, 1, 1000));  // 0.05 above the floor
+  s.append(sphere(2, {0, 4, 5}, 1, 1000));     // far from everything
+  s.nOwned = 2;
+  s.append(sphere(1, {2.08, 0, 1.05}, 1, 1000));  // a ghost, 0.08 from sphere 0 and 0.05 above the floor
+  LubricationPatches patches(replacing(), floorOnly());
+  patches.find(s);
+  CHECK(patches.pairs() == 3);
+  CHECK(patches.replaced(0, 1));
+  CHECK(patches.replaced(1, 0));
+  CHECK(patches.replaced(0, -5));
+  CHECK(patches.replaced(1, -5));
+  CHECK_FALSE(patches.replaced(0, 2));
+  CHECK_FALSE(patches.replaced(2, -5));
+  CHECK_FALSE(patches.any(1));
+  // Sphere 0 towards sphere 1: the disk r < R0 R = 0.5 around +x.
+  CHECK(patches.covers(0, {0.99, 0, 0}));
+  CHECK(patches.covers(0, {0.85, 0.45, 0.2}));    // 0.49 off the axis
+  CHECK_FALSE(patches.covers(0, {0.8, 0.5, 0.2}));  // 0.54 off it, above the floor's disk
+  CHECK_FALSE(patches.covers(0, {-0.99, 0, 0}));
+  // Sphere 0 towards the floor: the disk r < a = 1 around -z.
+  CHECK(patches.covers(0, {0, 0, -0.99}));
+  CHECK(patches.covers(0, {0.6, 0.7, -0.3}));
+  CHECK_FALSE(patches.covers(0, {0.6, 0.7, 0.3}));
+  // The ghost's patch towards sphere 0 (the rank holding its faces removes them too).
+  CHECK(patches.covers(2, {-0.99, 0, 0}));
+  CHECK_FALSE(patches.covers(2, {0.99, 0, 0}));
+
+  // Moved apart beyond h_act (0.12 apart, 0.15 above the floor): nothing replaced.
+  s.x[0] = {0, 0, 1.15};
+  s.x[2] = {2.12, 0, 1.15};
+  patches.find(s);
+  CHECK(patches.pairs() == 0);
+  CHECK_FALSE(patches.any(0));
+  CHECK_FALSE(patches.covers(0, {0, 0, -0.99}));
+}
+
+TEST_CASE("A replaced pair takes the whole open-edge LLCM force, at any gap until contact", "[lub]")
+{
+  LubricationParams p = replacing();
+  for (double aj : {1.0, 0.5, kWallRadius}) {
+    PairState s;
+    s.normal = Vec3{0, 0, 1};
+    s.radiusI = 1;
+    s.radiusJ = aj;
+    s.viscosity = 0.3;
+    s.velocityI = {0, 0, 0.2};  // approaching: a pure squeeze
+    const double R = s.reducedRadius();
+    for (double h : {0.01, 0.05, 0.3}) {  // below and above the activation gap (0.1)
+      s.gap = h;
+      const double H0 = h + 0.5 * R;  // R0 = 1
+      const Vec3 blcm = blcmForce(s).forceI;
+      const Vec3 f = lubricationForce(p, s, 1e-3, 0, true).forceI;
+      CHECK(f.z == Approx(blcm.z * (1 - h / H0)).epsilon(1e-12));  // the inner pressure over the disk
+      CHECK(f.z < 0);
+      // Not replaced: the unresolved part below h_act, nothing above it.
+      const Vec3 added = lubricationForce(p, s, 1e-3).forceI;
+      if (h < 0.1) CHECK(std::fabs(added.z) < std::fabs(f.z));
+      else CHECK(added.z == 0);
+    }
+    s.gap = 5e-4;  // within the contact gap: the contact law alone
+    CHECK(norm(lubricationForce(p, s, 1e-3, 0, true).forceI) == 0);
+  }
+  // The tangential terms are the LLCM's disk integrals in full (a wall, sliding).
+  PairState w;
+  w.normal = Vec3{0, 0, -1};
+  w.radiusI = 1;
+  w.radiusJ = kWallRadius;
+  w.viscosity = 0.3;
+  w.velocityI = {0.1, 0, 0};
+  w.gap = 0.3;
+  const PairForce f = lubricationForce(p, w, 1e-3, 0, true), model = llcmForce(w, 1.0, true);
+  CHECK(f.forceI.x == Approx(model.forceI.x).epsilon(1e-12));
+  CHECK(f.forceI.x < 0);
+  const Vec3 atMidGap = model.torqueI + cross(0.5 * w.gap * w.normal, model.forceI);  // the force acts at mid-gap
+  CHECK(f.torqueI.y == Approx(atMidGap.y).epsilon(1e-12));
+}
