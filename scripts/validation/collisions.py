@@ -12,6 +12,8 @@
   calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres at five positions of
                their gap on the grid, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
+  replacement: -lub_coupling add against replace at d/dx 12 (normal, the pair at three positions of its
+               gap on the grid, parallel, rotation) against the exact values
   confinement: the normal mode's resolved force in boxes of 4 (the study's) to 12 d
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
@@ -24,7 +26,7 @@
                takes it
   inertia:     e at St 20, 30, 60 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
                gap (-lub_inertia)
-usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--reuse] [--fine]
+usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|replacement|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
@@ -839,6 +841,54 @@ def pair_position_figure(by_gap):
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_pair_position.png"), dpi=120)
 
+# --- The local replacement (-lub_coupling replace) ---------------------------------------------------
+REPLACEMENT_CELLS = 1.0  # kDefaultReplacementCells (include/vp/interactions/LubricationModel.hpp)
+
+
+def replacement():
+    """-lub_coupling add (the resolved force plus the unresolved part, the default) against replace
+    (the gap patches' normal force replaced by the LLCM's open-edge squeeze from REPLACEMENT_CELLS),
+    d/dx 12: each mode's error against its exact resistance; the pair at three positions of its gap on
+    the grid (a face plane, a quarter cell, a cell centre), its mean and range."""
+    r = 12
+    gaps = {"normal": [0.01, 0.02, 0.05, 0.1, 0.2, 0.5], "pair": [0.01, 0.05, 0.1, 0.2, 0.5],
+            "parallel": [0.01, 0.05, 0.1], "rotation": [0.01, 0.05, 0.1]}
+    fig, axes = plt.subplots(1, 4, figsize=(16, 4.2))
+    for ax, (mode, (exact, title)) in zip(axes, MODES.items()):
+        aligns = [0.0, 0.25, 0.5] if mode == "pair" else [0.0]
+        for k, coupling in enumerate(("add", "replace")):
+            means, lows, highs = [], [], []
+            for e in gaps[mode]:
+                x = exact(e)
+                if coupling == "add":
+                    corr = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
+                    v = [calib_run(mode, e, r, align=al) + corr for al in aligns]
+                else:
+                    v = [calib_run(mode, e, r, "replace", REPLACEMENT_CELLS, align=al) for al in aligns]
+                err = [100 * (y / x - 1) for y in v]
+                means.append(sum(err) / len(err))
+                lows.append(min(err))
+                highs.append(max(err))
+                print("replacement: %-8s d/dx %d eps %5g  %-7s error %% %s%s" %
+                      (mode, r, e, coupling, " / ".join("%+.1f" % y for y in err),
+                       "  (mean %+.1f, range %.1f)" % (means[-1], highs[-1] - lows[-1]) if len(err) > 1 else ""), flush=True)
+            g = [e * (1.06 if k else 1) for e in gaps[mode]]
+            ax.errorbar(g, means, yerr=[[m - lo for m, lo in zip(means, lows)], [hi - m for m, hi in zip(means, highs)]],
+                        fmt="o-" if k else "s--", capsize=3, label=coupling + (" (mean, range over positions)" if len(aligns) > 1 else ""))
+        ax.axhline(0, color="k", lw=0.8)
+        for band in (5, 15) if mode in ("normal", "pair") else (15,):
+            ax.axhspan(-band, band, color="g", alpha=0.06)
+        ax.set_xscale("log")
+        ax.set_xlabel("gap eps = h / a")
+        ax.set_ylabel("error against exact (%)")
+        ax.set_title(title, fontsize=9)
+        ax.legend(fontsize=7)
+    fig.suptitle("-lub_coupling add and replace (from %g cells) against exact Stokes resistances, d/dx %d" % (REPLACEMENT_CELLS, r),
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "lubrication_replacement.png"), dpi=120)
+
+
 # --- The liquid's inertia in the gap ----------------------------------------------------------------
 def inertia():
     print("nominal St  impact St  impact Re  e/e_dry  e/e_dry with -lub_inertia  change")
@@ -853,8 +903,8 @@ def inertia():
               f"{(inert[1] - plain[1]) / E_DRY:+6.3f}", flush=True)
 
 
-STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "confinement", "sensitivity", "pair", "harada",
-           "inertia")
+STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calibration", "replacement", "confinement", "sensitivity",
+           "pair", "harada", "inertia")
 
 if __name__ == "__main__":
     what = chosen_study(__doc__, STUDIES, valued=("--res",))

@@ -225,10 +225,11 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
   const double dV = grid_.cellVolume();
   ReadValues a(uStar), us(us_);
   forCovered(s, [&](PetscInt at, int c, int p, const Vec3& r, double chi) {
-    if (patches && patches->any(p) && patches->covers(p, r)) return;  // the analytic force stands for it
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
     f[c] = rho_ * chi * stepLambda_ * (a[at] - us[at]) * dV;
+    if (patches && patches->any(p))
+      if (const Vec3* n = patches->patchAt(p, r)) f -= (f[c] * (*n)[c]) * *n;  // the analytic squeeze stands for it
     const Vec3 t = cross(r, f);
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {

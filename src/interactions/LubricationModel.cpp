@@ -20,7 +20,8 @@ void LubricationParams::resolveDefaults(double cellSize, bool coupled, double sa
 {
   // The resolved squeeze follows the exact Stokes resistance down to gaps of a fraction of a cell
   // (docs/collisions_calibration.md): the correction starts there.
-  if (activation == 0 && activationCells == 0 && coupled) activationCells = kDefaultActivationCells;
+  if (activation == 0 && activationCells == 0 && coupled)
+    activationCells = replace ? kDefaultReplacementCells : kDefaultActivationCells;
   // The resolved shear force and torque follow theirs to smaller gaps still (same page).
   if (shearActivationCells == 0) shearActivationCells = std::min(activationCells, kDefaultShearActivationCells);
   gridGap_ = activationCells * cellSize;
@@ -107,11 +108,11 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
     f.forceI -= (0.6 * M_PI * s.density * a * a * U * U * std::log(hAct / h)) * s.normal;
   }
   const double hShear = p.shearActivationGap(a);
-  if (replaced || (s.gap < hShear && p.saturation * a < hShear)) {
+  if (s.gap < hShear && p.saturation * a < hShear) {
     PairState shear = s;
     shear.velocityI = s.tangential(s.velocityI);
     shear.velocityJ = s.tangential(s.velocityJ);
-    f += unresolvedPart(p, shear, hShear, a, replaced);
+    f += unresolvedPart(p, shear, hShear, a, false);
   }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;

@@ -15,7 +15,7 @@ LubricationParams readLubricationOptions()
   p.activation = o.real("-lub_activation", p.activation, "Gap eps_act = h/a (a: the smaller radius of the pair) below which "
                                                          "the unresolved force is added (0: -lub_activation_cells)");
   p.activationCells = o.real("-lub_activation_cells", p.activationCells,
-                             "Activation gap in grid cells, the same for every pair (0: 0.18 in coupled runs)");
+                             "Activation gap in grid cells, the same for every pair (0: 0.18 in coupled runs, 1 with -lub_coupling replace)");
   p.shearActivationCells = o.real("-lub_shear_activation_cells", p.shearActivationCells,
                                   "Activation gap of the tangential (sliding, rolling) terms in grid cells "
                                   "(0: 0.06 in coupled runs, at most -lub_activation_cells)");

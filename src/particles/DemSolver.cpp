@@ -761,11 +761,12 @@ long DemSolver::requiredSubsteps(double dtp) const
 
 void DemSolver::watchLubrication(const PairState& st, double contactGap, double invMassSum)
 {
-  // The BLCM resistance bounds the LLCM's (docs/lubrication.md): c = 6 pi mu R^2 (1/h - 1/h_act).
+  // The BLCM resistance bounds the LLCM's (docs/lubrication.md): c = 6 pi mu R^2 (1/h - 1/h_act),
+  // and 6 pi mu R^2 / h the whole squeeze of a replaced pair (-lub_coupling replace).
   const double a = std::min(st.radiusI, st.radiusJ), R = st.reducedRadius();
   const double h = std::max({st.gap, lub_.saturation * a, contactGap});
   const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));  // the departure's, if larger
-  const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - 1 / hAct);
+  const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - (lub_.replace ? 0 : 1 / hAct));
   lubRateSeen_ = std::max(lubRateSeen_, c * invMassSum);
 }
 

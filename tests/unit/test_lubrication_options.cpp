@@ -95,6 +95,12 @@ TEST_CASE("Lubrication defaults resolved from the grid, the fluid and the roughn
   r.activation = 0.01;
   CHECK_THROWS_WITH(r.resolveDefaults(1e-4, true, 0.05), "option -lub_saturation: must be in (0, -lub_activation = 0.01), got 0.05");
   CHECK(r.activationGap(2e-3) == Approx(2e-5).epsilon(1e-15));  // eps_act given: per pair radius
+  LubricationParams v;  // replace: its own default activation gap, the tangential terms' unchanged
+  v.model = LubModel::Llcm;
+  v.replace = true;
+  v.resolveDefaults(1e-4, true, 4e-4);
+  CHECK(v.activationCells == kDefaultReplacementCells);
+  CHECK(v.shearActivationCells == kDefaultShearActivationCells);
   LubricationParams u;
   u.model = LubModel::Llcm;
   u.replace = true;

@@ -1,5 +1,5 @@
 // -lub_coupling replace: the gap patches (coupling/LubricationPatches.hpp) and the whole open-edge
-// LLCM force of a replaced pair (interactions/LubricationModel.hpp, Llcm.hpp).
+// LLCM squeeze of a replaced pair (interactions/LubricationModel.hpp, Llcm.hpp).
 #include "../support/DemFixtures.hpp"
 #include "vp/coupling/LubricationPatches.hpp"
 #include "vp/interactions/Blcm.hpp"
@@ -51,17 +51,18 @@ TEST_CASE("Gap patches: each surface's disk facing a gap closer than h_act, ghos
   CHECK_FALSE(patches.replaced(2, -5));
   CHECK_FALSE(patches.any(1));
   // Sphere 0 towards sphere 1: the disk r < R0 R = 0.5 around +x.
-  CHECK(patches.covers(0, {0.99, 0, 0}));
-  CHECK(patches.covers(0, {0.85, 0.45, 0.2}));    // 0.49 off the axis
-  CHECK_FALSE(patches.covers(0, {0.8, 0.5, 0.2}));  // 0.54 off it, above the floor's disk
-  CHECK_FALSE(patches.covers(0, {-0.99, 0, 0}));
+  CHECK(patches.patchAt(0, {0.99, 0, 0}) != nullptr);
+  CHECK(patches.patchAt(0, {0.85, 0.45, 0.2}) != nullptr);    // 0.49 off the axis
+  CHECK(patches.patchAt(0, {0.8, 0.5, 0.2}) == nullptr);  // 0.54 off it, above the floor's disk
+  CHECK(patches.patchAt(0, {-0.99, 0, 0}) == nullptr);
   // Sphere 0 towards the floor: the disk r < a = 1 around -z.
-  CHECK(patches.covers(0, {0, 0, -0.99}));
-  CHECK(patches.covers(0, {0.6, 0.7, -0.3}));
-  CHECK_FALSE(patches.covers(0, {0.6, 0.7, 0.3}));
+  CHECK(patches.patchAt(0, {0, 0, -0.99}) != nullptr);
+  CHECK(patches.patchAt(0, {0.6, 0.7, -0.3}) != nullptr);
+  CHECK(patches.patchAt(0, {0.6, 0.7, -0.3})->z == -1);
+  CHECK(patches.patchAt(0, {0.6, 0.7, 0.3}) == nullptr);
   // The ghost's patch towards sphere 0 (the rank holding its faces removes them too).
-  CHECK(patches.covers(2, {-0.99, 0, 0}));
-  CHECK_FALSE(patches.covers(2, {0.99, 0, 0}));
+  CHECK(patches.patchAt(2, {-0.99, 0, 0}) != nullptr);
+  CHECK(patches.patchAt(2, {0.99, 0, 0}) == nullptr);
 
   // Moved apart beyond h_act (0.12 apart, 0.15 above the floor): nothing replaced.
   s.x[0] = {0, 0, 1.15};
@@ -69,10 +70,10 @@ TEST_CASE("Gap patches: each surface's disk facing a gap closer than h_act, ghos
   patches.find(s);
   CHECK(patches.pairs() == 0);
   CHECK_FALSE(patches.any(0));
-  CHECK_FALSE(patches.covers(0, {0, 0, -0.99}));
+  CHECK(patches.patchAt(0, {0, 0, -0.99}) == nullptr);
 }
 
-TEST_CASE("A replaced pair takes the whole open-edge LLCM force, at any gap until contact", "[lub]")
+TEST_CASE("A replaced pair takes the whole open-edge LLCM squeeze, at any gap until contact", "[lub]")
 {
   LubricationParams p = replacing();
   for (double aj : {1.0, 0.5, kWallRadius}) {
@@ -98,17 +99,18 @@ TEST_CASE("A replaced pair takes the whole open-edge LLCM force, at any gap unti
     s.gap = 5e-4;  // within the contact gap: the contact law alone
     CHECK(norm(lubricationForce(p, s, 1e-3, 0, true).forceI) == 0);
   }
-  // The tangential terms are the LLCM's disk integrals in full (a wall, sliding).
+  // The tangential terms stay as without the replacement: added below their own activation gap.
   PairState w;
   w.normal = Vec3{0, 0, -1};
   w.radiusI = 1;
   w.radiusJ = kWallRadius;
   w.viscosity = 0.3;
-  w.velocityI = {0.1, 0, 0};
-  w.gap = 0.3;
-  const PairForce f = lubricationForce(p, w, 1e-3, 0, true), model = llcmForce(w, 1.0, true);
-  CHECK(f.forceI.x == Approx(model.forceI.x).epsilon(1e-12));
-  CHECK(f.forceI.x < 0);
-  const Vec3 atMidGap = model.torqueI + cross(0.5 * w.gap * w.normal, model.forceI);  // the force acts at mid-gap
-  CHECK(f.torqueI.y == Approx(atMidGap.y).epsilon(1e-12));
+  w.velocityI = {0.1, 0, -0.2};
+  w.angularVelocityI = {0, 2, 0};
+  for (double h : {0.002, 0.05}) {  // below and above the tangential activation gap (0.006)
+    w.gap = h;
+    const Vec3 replaced = lubricationForce(p, w, 1e-3, 0, true).forceI, added = lubricationForce(p, w, 1e-3).forceI;
+    CHECK(replaced.x == Approx(added.x).epsilon(1e-12));
+    CHECK(replaced.z != Approx(added.z).epsilon(1e-6));
+  }
 }

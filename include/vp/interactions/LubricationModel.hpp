@@ -8,9 +8,9 @@
 // since the grid resolves the logarithmic shear singularity to smaller gaps than the squeeze.
 // Zero once the surfaces touch (h <= h_contact, the roughness gap): the contact model alone acts
 // there. With -lub_coupling replace a pair closer than h_act at the start of a fluid step has the
-// resolved force over its gap patch removed (coupling/LubricationPatches.hpp) and gets the whole
-// F_llcm(max(h, h_sat)) over that disk instead (its squeeze with the inner pressure at the disk's
-// edge, Llcm.hpp), whatever its gap during the step. A free-slip wall gets a quarter of the squeeze and no
+// resolved normal force over its gap patch removed (coupling/LubricationPatches.hpp) and gets the
+// whole squeeze F_llcm(max(h, h_sat)) over that disk instead (with the inner pressure at the disk's
+// edge, Llcm.hpp), whatever its gap during the step; its tangential terms stay added. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
@@ -22,6 +22,9 @@ enum class LubModel { None, Blcm, Llcm };
 
 // Default activation gap of coupled runs, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultActivationCells = 0.18;
+// Default activation gap of -lub_coupling replace, in grid cells: the replaced patches then cover
+// the gaps whose squeeze depends on their position on the grid (docs/collisions_calibration.md).
+constexpr double kDefaultReplacementCells = 1.0;
 // Default activation gap of the tangential terms, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultShearActivationCells = 0.06;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
@@ -34,7 +37,7 @@ struct LubricationParams {
   // eps_act = h_act / a, per pair radius. 0: the gap activationCells grid cells instead.
   double activation = 0;
   // h_act in grid cells (when activation is 0); 0: set by resolveDefaults() (kDefaultActivationCells
-  // in coupled runs).
+  // in coupled runs, kDefaultReplacementCells with replace).
   double activationCells = 0;
   // h_act,t of the tangential terms in grid cells (with activationCells; 0: set by resolveDefaults() to
   // kDefaultShearActivationCells, at most activationCells). With an activation in radii both parts
@@ -83,7 +86,7 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
 // the activation and saturation gaps are fractions of; 0: the smaller radius (a spheroid gives its
 // equatorial semi-axis while its radii are those of the gap's curvatures).
 // replaced: the pair's gap patch was taken out of the resolved force (-lub_coupling replace): the
-// whole model force at max(h, h_sat), at any gap.
+// whole model squeeze at max(h, h_sat), at any gap (the tangential terms as without).
 PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale = 0,
                            bool replaced = false);
 
