@@ -707,18 +707,19 @@ def calib_value(mode, row, speed, resolved=True):
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0, box=4):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0, box=4, patch=None):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
     tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller).
-    lub "replace": the resolved run with -lub_coupling replace (patches of r0 reduced radii from
-    `cells`), the resolved force plus the LLCM's together.
+    lub "replace": the resolved run with -lub_coupling replace from `cells` (patches of depth `patch`
+    radii; None: the default), the resolved force plus the LLCM's together.
     `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre).
     `box`: the cubic box's side in d (the normal mode's resolved runs; 4 elsewhere)."""
     n = box * r
     bc, one, speed = calib_geometry(mode, eps, box)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
     tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align) + ("" if box == 4 else "_box%g" % box)
+    tag += "" if patch is None else "_p%g" % patch
     out = os.path.join(scratch, "vp_col_cal_" + tag)
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (box, box, box), "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
@@ -727,7 +728,8 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0
         dt = 0.5 / r ** 2 / MU
         part = ["-particles_file", pair_file(out + "_in", eps, speed, align / r), "-particles_fixed"] if one is None else one
         film = ["-lub_model", "none"] if lub == "none" else \
-            ["-lub_model", "llcm", "-lub_coupling", "replace", "-lub_activation_cells", cells, "-lub_llcm_r0", r0]
+            ["-lub_model", "llcm", "-lub_coupling", "replace", "-lub_activation_cells", cells] + \
+            ([] if patch is None else ["-lub_patch_gap", patch])
         rows = run(out, *common, *part, *CASE_FLUID, "-time_dt", dt, "-time_final", RELAX, *film, case="none")
         total = calib_value(mode, rows[-1], speed)
         return total if lub == "none" else total + calib_value(mode, rows[-1], speed, resolved=False)
@@ -887,6 +889,14 @@ def replacement():
                  fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_replacement.png"), dpi=120)
+    # The patch's depth (-lub_patch_gap) at eps 0.1, where the sphere's patch at a wall reaches a
+    # gap of 0.35 a and the pair's 0.2 a (at 0.25).
+    for patch in (0.15, 0.25, 0.4):
+        wall = 100 * (calib_run("normal", 0.1, r, "replace", REPLACEMENT_CELLS, patch=patch) / MODES["normal"][0](0.1) - 1)
+        pair = [100 * (calib_run("pair", 0.1, r, "replace", REPLACEMENT_CELLS, align=al, patch=patch) / TWO[0.1] - 1)
+                for al in (0.0, 0.25, 0.5)]
+        print("replacement: patch depth %g a at eps 0.1, d/dx %d: normal %+.1f %%, pair %s %%" %
+              (patch, r, wall, " / ".join("%+.1f" % y for y in pair)), flush=True)
 
 
 # --- The liquid's inertia in the gap ----------------------------------------------------------------

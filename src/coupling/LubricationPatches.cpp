@@ -8,8 +8,9 @@ void LubricationPatches::find(const ParticleStore& s)
   patches_.clear();
   replaced_.clear();
   const std::size_t n = s.size();
-  const double region2 = lub_.llcmRegion * lub_.llcmRegion;
-  auto add = [&](std::size_t p, const Vec3& normal, double R) { patches_.push_back({p, normal, region2 * R * R}); };
+  auto add = [&](std::size_t p, const Vec3& normal, double R, double a) {
+    patches_.push_back({p, normal, lub_.patchRadiusSquared(R, a)});
+  };
   double rmax = 0;
   Vec3 lo = n ? s.x[0] : Vec3{}, hi = lo;
   for (std::size_t p = 0; p < n; ++p) {
@@ -22,7 +23,7 @@ void LubricationPatches::find(const ParticleStore& s)
       const Wall& w = walls_[f];
       const double a = s.radius[p];
       if (!w.active || !(w.distance(s.x[p]) - a < lub_.activationGap(a))) continue;
-      add(p, -1.0 * w.normal(), a);
+      add(p, -1.0 * w.normal(), a, a);
       replaced_.push_back({-1 - f, s.id[p]});  // a wall's key sorts first
     }
   }
@@ -34,8 +35,8 @@ void LubricationPatches::find(const ParticleStore& s)
       const double r = norm(d), ai = s.radius[i], aj = s.radius[j];
       if (!(r - ai - aj < lub_.activationGap(std::min(ai, aj))) || s.id[i] == s.id[j]) return;
       const double R = ai * aj / (ai + aj);
-      add(i, (1 / r) * d, R);
-      add(j, (-1 / r) * d, R);
+      add(i, (1 / r) * d, R, std::min(ai, aj));
+      add(j, (-1 / r) * d, R, std::min(ai, aj));
       replaced_.push_back({std::min(s.id[i], s.id[j]), std::max(s.id[i], s.id[j])});
     });
   }

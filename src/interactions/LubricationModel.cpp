@@ -3,6 +3,7 @@
 #include "vp/interactions/Blcm.hpp"
 #include "vp/interactions/Llcm.hpp"
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace vp {
@@ -69,14 +70,19 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
 
 namespace {
 
-// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion; a replaced pair: the first term.
+// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion; a replaced pair: the first term
+// over its patch (r0^2 = 2 R delta: the region R0 = r0 / R).
 PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double hAct, double a, bool replaced)
 {
   PairState at = s, act = s;
   at.gap = std::max(s.gap, p.saturation * a);
   act.gap = hAct;
-  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at, replaced);
-  if (!replaced) f -= lubricationModelForce(p.model, p.llcmRegion, act);
+  if (replaced) {
+    const double R = s.reducedRadius();
+    return lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true);
+  }
+  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
+  f -= lubricationModelForce(p.model, p.llcmRegion, act);
   return f;
 }
 

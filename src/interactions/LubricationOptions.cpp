@@ -33,9 +33,12 @@ LubricationParams readLubricationOptions()
                      "docs/lubrication.md)");
   p.replace = o.choice("-lub_coupling", {"add", "replace"}, 0,
                        "How the correction meets the resolved force: add (the unresolved part F(h) - F(h_act) on top of the "
-                       "whole resolved force) or replace (the seed's local LLCM: below h_act the resolved force over each gap's "
-                       "disk r < r0 is removed and the whole LLCM force over that disk is applied; needs -lub_model llcm, "
-                       "-lub_llcm_r0 <= 1; docs/lubrication.md)") == 1;
+                       "whole resolved force) or replace (the seed's local LLCM: below h_act the resolved normal force over "
+                       "each gap's patch is removed and the lubrication squeeze over that patch applied; needs -lub_model "
+                       "llcm; docs/lubrication.md)")== 1;
+  p.patchGap = o.real("-lub_patch_gap", p.patchGap,
+                      "With -lub_coupling replace: the patch is the disk where the gap is below h + delta, delta = this "
+                      "times the smaller radius (0.25: r0 = a/2 between equal spheres, 0.71 a at a wall)");
   if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
@@ -63,8 +66,10 @@ LubricationParams readLubricationOptions()
     failOption("-lub_llcm_r0", "must be > 0", p.llcmRegion);
   if (p.replace && p.model != LubModel::Llcm)
     failOption("-lub_coupling", "replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm");
-  if (p.replace && p.llcmRegion > 1)
-    failOption("-lub_llcm_r0", "with -lub_coupling replace the patch r0 = R0 R must fit within the sphere (R0 <= 1)", p.llcmRegion);
+  // r0^2 = 2 R delta <= a^2 for every pair (R <= a, a sphere's at a wall) while delta <= a/2.
+  if (!(p.patchGap > 0 && p.patchGap <= 0.5))
+    failOption("-lub_patch_gap", "must be in (0, 0.5]: the patch (r0^2 = 2 R delta) must fit within the sphere", p.patchGap);
+  if (p.patchGap != kDefaultPatchGap && !p.replace) failOption("-lub_patch_gap", "applies to -lub_coupling replace only");
   if (p.replace && p.implicitSqueeze)
     failOption("-lub_integration", "implicit takes the added squeeze; with -lub_coupling replace use explicit");
   if (p.replace && p.inertia)

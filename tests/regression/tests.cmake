@@ -260,6 +260,9 @@ vp_case_run(steady_stokes_fitted_start 2 --expect kinetic_energy=9.948675781e-08
 # The lubrication correction's calibration at d/dx 8 for one gap (docs/collisions.md).
 add_test(NAME calibration_normal_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_calibration.py $<TARGET_FILE:vpsolve>)
 set_tests_properties(calibration_normal_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
+# The local replacement: the pair's sub-cell squeeze no longer depends on the gap's position (docs/lubrication.md).
+add_test(NAME calibration_replacement_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_replacement.py $<TARGET_FILE:vpsolve>)
+set_tests_properties(calibration_replacement_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
 # Two spheres at a resolved gap: the same force wherever the gap lies on the grid (docs/collisions.md).
 add_test(NAME calibration_pair_position_d8 COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_pair_position.py $<TARGET_FILE:vpsolve>)
 set_tests_properties(calibration_pair_position_d8 PROPERTIES ENVIRONMENT "${VP_MPI_ENV}")
@@ -457,8 +460,8 @@ vp_bad_input(lub_inertia_without_model 1 "option -lub_inertia: corrects the lubr
              -lub_inertia)
 vp_bad_input(lub_replace_model 1 "option -lub_coupling: replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm"
              -lub_model blcm -lub_coupling replace)
-vp_bad_input(lub_replace_wide_patch 1 "option -lub_llcm_r0: with -lub_coupling replace the patch r0 = R0 R must fit within the sphere \\(R0 <= 1\\), got 2"
-             -lub_model llcm -lub_coupling replace -lub_llcm_r0 2)
+vp_bad_input(lub_replace_wide_patch 1 "option -lub_patch_gap: must be in \\(0, 0.5\\]: the patch .r0\\^2 = 2 R delta. must fit within the sphere, got 0.6"
+             -lub_model llcm -lub_coupling replace -lub_patch_gap 0.6)
 vp_bad_input(lub_replace_without_fluid 1 "option -lub_coupling: replace takes the gap patch out of the resolved force: it needs a fluid"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particle_radius 0.002 -lub_model llcm
              -lub_activation 0.05 -lub_coupling replace)

@@ -67,8 +67,10 @@ TEST_CASE("Lubrication options: bad values name the option and the range", "[lub
   CHECK(errorOf({{"-lub_coupling", "replace"}}) ==
         "option -lub_coupling: replace applies the LLCM's inner solution over the gap's disk r < r0: it needs -lub_model llcm");
   CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "blcm"}}).rfind("option -lub_coupling: replace applies", 0) == 0);
-  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_llcm_r0", "1.5"}}) ==
-        "option -lub_llcm_r0: with -lub_coupling replace the patch r0 = R0 R must fit within the sphere (R0 <= 1), got 1.5");
+  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_patch_gap", "0.6"}}) ==
+        "option -lub_patch_gap: must be in (0, 0.5]: the patch (r0^2 = 2 R delta) must fit within the sphere, got 0.6");
+  CHECK(errorOf({{"-lub_model", "llcm"}, {"-lub_patch_gap", "0.3"}}) ==
+        "option -lub_patch_gap: applies to -lub_coupling replace only");
   CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_integration", "implicit"}}) ==
         "option -lub_integration: implicit takes the added squeeze; with -lub_coupling replace use explicit");
   CHECK(errorOf({{"-lub_shear_activation_cells", "-0.1"}}).rfind("option -lub_shear_activation_cells: must be >= 0", 0) == 0);

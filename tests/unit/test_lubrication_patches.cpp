@@ -12,7 +12,7 @@ using vp::test::sphere;
 
 namespace {
 
-// The LLCM replaced below one cell of 0.1 m, patches of R0 = 1.
+// The LLCM replaced below one cell of 0.1 m, patches of the default depth delta = a/4.
 LubricationParams replacing()
 {
   LubricationParams p;
@@ -50,16 +50,17 @@ TEST_CASE("Gap patches: each surface's disk facing a gap closer than h_act, ghos
   CHECK_FALSE(patches.replaced(0, 2));
   CHECK_FALSE(patches.replaced(2, -5));
   CHECK_FALSE(patches.any(1));
-  // Sphere 0 towards sphere 1: the disk r < R0 R = 0.5 around +x.
+  // Sphere 0 towards sphere 1: the disk r < sqrt(2 R delta) = 0.5 around +x (delta = a/4).
   CHECK(patches.patchAt(0, {0.99, 0, 0}) != nullptr);
   CHECK(patches.patchAt(0, {0.85, 0.45, 0.2}) != nullptr);    // 0.49 off the axis
   CHECK(patches.patchAt(0, {0.8, 0.5, 0.2}) == nullptr);  // 0.54 off it, above the floor's disk
   CHECK(patches.patchAt(0, {-0.99, 0, 0}) == nullptr);
-  // Sphere 0 towards the floor: the disk r < a = 1 around -z.
+  // Sphere 0 towards the floor: the disk r < sqrt(2 a delta) = 0.707 around -z.
   CHECK(patches.patchAt(0, {0, 0, -0.99}) != nullptr);
-  CHECK(patches.patchAt(0, {0.6, 0.7, -0.3}) != nullptr);
-  CHECK(patches.patchAt(0, {0.6, 0.7, -0.3})->z == -1);
-  CHECK(patches.patchAt(0, {0.6, 0.7, 0.3}) == nullptr);
+  CHECK(patches.patchAt(0, {0.5, 0.4, -0.7}) != nullptr);  // 0.64 off the axis
+  CHECK(patches.patchAt(0, {0.5, 0.4, -0.7})->z == -1);
+  CHECK(patches.patchAt(0, {0.5, 0.5, -0.7}) == nullptr);  // 0.71 off it
+  CHECK(patches.patchAt(0, {0.5, 0.4, 0.7}) == nullptr);
   // The ghost's patch towards sphere 0 (the rank holding its faces removes them too).
   CHECK(patches.patchAt(2, {-0.99, 0, 0}) != nullptr);
   CHECK(patches.patchAt(2, {0.99, 0, 0}) == nullptr);
@@ -83,10 +84,9 @@ TEST_CASE("A replaced pair takes the whole open-edge LLCM squeeze, at any gap un
     s.radiusJ = aj;
     s.viscosity = 0.3;
     s.velocityI = {0, 0, 0.2};  // approaching: a pure squeeze
-    const double R = s.reducedRadius();
     for (double h : {0.01, 0.05, 0.3}) {  // below and above the activation gap (0.1)
       s.gap = h;
-      const double H0 = h + 0.5 * R;  // R0 = 1
+      const double H0 = h + 0.25 * std::min(1.0, aj);  // h + delta, delta = a/4 of the smaller sphere
       const Vec3 blcm = blcmForce(s).forceI;
       const Vec3 f = lubricationForce(p, s, 1e-3, 0, true).forceI;
       CHECK(f.z == Approx(blcm.z * (1 - h / H0)).epsilon(1e-12));  // the inner pressure over the disk

@@ -2,11 +2,12 @@
 // The gap patches of the local lubrication coupling (-lub_coupling replace, after the seed's LLCM:
 // the resolved surface forces over the gap are replaced by the analytic inner force). At the start
 // of every fluid step, each pair of spheres and each sphere and wall closer than the activation gap
-// h_act gives both its surfaces a patch: the disk r < r0 = R0 R (the LLCM's region, R the reduced
-// radius, a at a wall) around the line of centres, on the side facing the gap. The normal part (along
+// h_act gives both its surfaces a patch: the disk r < r0 around the line of centres, on the side
+// facing the gap, where the gap is below h + delta (r0^2 = 2 R delta, R the reduced radius, a at a
+// wall; delta = -lub_patch_gap times the smaller radius). The normal part (along
 // the line of centres) of the penalization force of the faces a sphere owns within its patches'
 // cylinders is left out of its resolved force (Penalization::forces), and the DEM applies the whole
-// LLCM squeeze over the disk to those pairs for the whole step (LubricationModel.hpp), whatever their
+// lubrication squeeze over the disk to those pairs for the whole step (LubricationModel.hpp), whatever their
 // gap during it. The tangential parts stay resolved, with the added correction below their own
 // activation gap: replaced too, they fell 22-33 % short of the exact sliding resistance at d/dx 12
 // (docs/lubrication.md). Found from the positions

@@ -9,8 +9,9 @@
 // Zero once the surfaces touch (h <= h_contact, the roughness gap): the contact model alone acts
 // there. With -lub_coupling replace a pair closer than h_act at the start of a fluid step has the
 // resolved normal force over its gap patch removed (coupling/LubricationPatches.hpp) and gets the
-// whole squeeze F_llcm(max(h, h_sat)) over that disk instead (with the inner pressure at the disk's
-// edge, Llcm.hpp), whatever its gap during the step; its tangential terms stay added. A free-slip wall gets a quarter of the squeeze and no
+// whole squeeze of the lubrication pressure over that disk instead, F_blcm (1 - h/H0) at
+// max(h, h_sat), H0 = h + delta (Llcm.hpp, open edge), whatever its gap during the step; its
+// tangential terms stay added. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
@@ -25,6 +26,8 @@ constexpr double kDefaultActivationCells = 0.18;
 // Default activation gap of -lub_coupling replace, in grid cells: the replaced patches then cover
 // the gaps whose squeeze depends on their position on the grid (docs/collisions_calibration.md).
 constexpr double kDefaultReplacementCells = 1.0;
+// Default depth of a replaced patch, delta / a (measured: docs/collisions_calibration.md).
+constexpr double kDefaultPatchGap = 0.25;
 // Default activation gap of the tangential terms, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultShearActivationCells = 0.06;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
@@ -56,6 +59,10 @@ struct LubricationParams {
   // -lub_coupling replace: the seed's local replacement of the resolved force over the gap patch
   // (coupling/LubricationPatches.hpp) instead of the added unresolved part.
   bool replace = false;
+  // -lub_patch_gap delta / a: the patch is the disk where the gap is below h + delta,
+  // r0^2 = 2 R delta (a: the smaller radius, a sphere's at a wall).
+  double patchGap = kDefaultPatchGap;
+  double patchRadiusSquared(double R, double a) const { return 2 * R * patchGap * a; }
 
   // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
   // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a
