@@ -311,7 +311,9 @@ void DemSolver::computeForces(double dt)
     const bool candidate = s.flags[i] & kDeparting;
     bool departing = false;
     // Walls after all particle partners, in face order (as if their ids followed every particle's).
-    if (s.wallTouch[i] || nearWall(s.x[i], std::max({reach, lubReach, candidate ? a + handOff_.departureGap() : 0.0}))) {
+    // A wall pair replaced at the step's start keeps its squeeze while it moves beyond h_act.
+    if (s.wallTouch[i] || nearWall(s.x[i], std::max({reach, lubReach, candidate ? a + handOff_.departureGap() : 0.0})) ||
+        (patches_ && patches_->replacedAtWall(s.id[i]))) {
       std::uint8_t touch = 0;
       for (int f : activeWalls_) {
         const Wall& wall = walls_[f];

@@ -49,6 +49,8 @@ TEST_CASE("Gap patches: each surface's disk facing a gap closer than h_act, ghos
   CHECK(patches.replaced(1, -5));
   CHECK_FALSE(patches.replaced(0, 2));
   CHECK_FALSE(patches.replaced(2, -5));
+  CHECK(patches.replacedAtWall(1));
+  CHECK_FALSE(patches.replacedAtWall(2));
   CHECK_FALSE(patches.any(1));
   // Sphere 0 towards sphere 1: the disk r < sqrt(2 R delta) = 0.5 around +x (delta = a/4).
   CHECK(patches.patchAt(0, {0.99, 0, 0}) != nullptr);

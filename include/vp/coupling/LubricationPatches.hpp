@@ -42,6 +42,12 @@ public:
   bool any(std::size_t p) const { return begin_[p] < begin_[p + 1]; }
   // Whether the pair of these ids (a wall as -1 - face) had its patches taken out at the step's start.
   bool replaced(std::int64_t idI, std::int64_t idJ) const;
+  bool replacedAtWall(std::int64_t id) const
+  {
+    for (int f = 0; f < 6; ++f)
+      if (walls_[f].active && replaced(id, -1 - f)) return true;
+    return false;
+  }
   std::size_t pairs() const { return replaced_.size(); }
 
 private:
