@@ -228,9 +228,11 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
     // The particle receives minus the penalization force on the fluid, rho chi lambda (u_s - u*).
     Vec3 f;
     f[c] = rho_ * chi * stepLambda_ * (a[at] - us[at]) * dV;
-    if (patches && patches->any(p))
-      if (const Vec3* n = patches->patchAt(p, r)) f -= (f[c] * (*n)[c]) * *n;  // the analytic squeeze stands for it
     const Vec3 t = cross(r, f);
+    // In a gap patch the analytic squeeze stands for the normal force; its moment (the pressure of
+    // the tangential motions) stays resolved.
+    if (patches && patches->any(p))
+      if (const Vec3* n = patches->patchAt(p, r)) f -= (f[c] * (*n)[c]) * *n;
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {
       sum[m] += f[m];

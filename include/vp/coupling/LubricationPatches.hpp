@@ -6,7 +6,8 @@
 // facing the gap, where the gap is below h + delta (r0^2 = 2 R delta, R the reduced radius, a at a
 // wall; delta = -lub_patch_gap times the smaller radius). The normal part (along
 // the line of centres) of the penalization force of the faces a sphere owns within its patches'
-// cylinders is left out of its resolved force (Penalization::forces), and the DEM applies the whole
+// cylinders is left out of its resolved force, not of its torque (Penalization::forces; the moment
+// carries the pressure of the tangential motions), and the DEM applies the whole
 // lubrication squeeze over the disk to those pairs for the whole step (LubricationModel.hpp), whatever their
 // gap during it. The tangential parts stay resolved, with the added correction below their own
 // activation gap: replaced too, they fell 22-33 % short of the exact sliding resistance at d/dx 12
