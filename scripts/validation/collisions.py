@@ -184,6 +184,9 @@ SUFFIX = "_nodeparture" if WITHOUT else ""
 # kept through a shallow contact (the cases' 2 fluid steps: about 0.02 d).
 COSTA = NO_DEPARTURE + ["-lub_saturation", 1e-3, "-contact_tc_steps", 8]
 RETTINGER = NO_DEPARTURE
+# The seed's local replacement (-lub_coupling replace, docs/lubrication.md), with the cases' set-up
+# and with the resolved force kept through the contact.
+REPLACE = ["-lub_coupling", "replace"]
 MODEL_ST = [20, 40, 100, 300, 1000]
 GLASS, WATER = 2500.0, 1000.0  # a light sphere: glass in water
 GLASS_ST = [100, 300, 500, 1000]
@@ -221,7 +224,8 @@ def restitution():
                 (HYDRO, WITHOUT, "<", GLASS_ST, (GLASS, WATER)))
     if "--models" in sys.argv:  # the cases' set-up (steel, glass) against the published recipes
         sets = (sets[0], (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)), (HYDRO, COSTA, "D", MODEL_ST, steel),
-                ("keep", RETTINGER, "o", MODEL_ST, steel))
+                ("keep", RETTINGER, "o", MODEL_ST, steel), (HYDRO, REPLACE, "v", MODEL_ST, steel),
+                ("keep", RETTINGER + REPLACE, "<", MODEL_ST, steel))
     if "--no-history" in sys.argv:  # the cases' set-up with and without the history force, steel and glass in water
         sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
@@ -230,6 +234,8 @@ def restitution():
         name = hydro + (cases + ", plain projection" if extra == PLAIN else cases + ", roughness 5e-5 d" if extra == ROUGH_GONDRET else
                         ", no history force" if extra == NO_HISTORY else
                         ", Costa et al. 2015's recipe" if extra == COSTA else
+                        cases + ", local replacement" if extra == REPLACE else
+                        ", local replacement" if extra == RETTINGER + REPLACE else
                         ", no departure" if extra == NO_DEPARTURE and hydro == HYDRO else
                         cases if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
