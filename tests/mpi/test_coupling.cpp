@@ -48,6 +48,41 @@ std::vector<double> particleState(MPI_Comm comm, Simulation& sim)
   return all;
 }
 
+// f(sub communicator) run on the first s ranks for every s = 1 .. size (each result kept by the ranks
+// that ran it).
+template <class F>
+std::vector<std::vector<double>> onRankCounts(F f)
+{
+  int size, rank;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  std::vector<std::vector<double>> runs;
+  for (int s = 1; s <= size; ++s) {
+    MPI_Comm sub;
+    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
+    if (sub != MPI_COMM_NULL) {
+      runs.push_back(f(sub));
+      MPI_Comm_free(&sub);
+    }
+  }
+  return runs;
+}
+
+// On rank 0: every rank count's particleState equals the one-rank run's within 1e-6 of its scale.
+bool sameOnRankCounts(const std::vector<std::vector<double>>& runs)
+{
+  bool ok = true;
+  for (std::size_t s = 1; s < runs.size(); ++s)
+    for (int m = 0; m < 9; ++m) {
+      const double scale = m < 3 ? 0.1 : (m < 6 ? std::fabs(runs[0][5]) : std::fabs(runs[0][8]));
+      INFO("ranks " << s + 1 << ", entry " << m << ": " << runs[s][m] << " vs " << runs[0][m]);
+      const bool same = std::fabs(runs[s][m] - runs[0][m]) <= 1e-6 * scale;
+      ok = ok && same;
+      CHECK(same);
+    }
+  return ok;
+}
+
 Config closedBox(std::array<int, 3> n, std::array<double, 3> hi)
 {
   Config c;
@@ -85,8 +120,7 @@ TEST_CASE("Fixed sphere in a periodic box: Stokes drag within 3 % of Hasimoto at
 
 TEST_CASE("A sphere falling across subdomain boundaries: the same trajectory on 1, 2 and 3 ranks", "[mpi][coupling]")
 {
-  int size, rank;
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  int rank;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   Config c = closedBox({16, 16, 24}, {0.08, 0.08, 0.12});
   c.fluid.rho = 985;
@@ -97,29 +131,16 @@ TEST_CASE("A sphere falling across subdomain boundaries: the same trajectory on 
   ScopedOptions o({{"-particle_position", "0.041,0.039,0.062"}, {"-particle_radius", "0.01"},
                    {"-particle_density", "1127"}, {"-particle_angular_velocity", "1,2,3"}, {"-contact_tc", "0.04"},
                    {"-dem_substeps", "4"}, {"-pressure_ksp_rtol", "1e-13"}, {"-velocity_ksp_rtol", "1e-13"}});
-  std::vector<std::vector<double>> runs;
-  for (int s = 1; s <= size; ++s) {
-    MPI_Comm sub;
-    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
-    if (sub != MPI_COMM_NULL) {
-      Simulation sim(sub, RunConfig(c));
-      for (int k = 0; k < 25; ++k) sim.advance(c.time.dt);
-      runs.push_back(particleState(sub, sim));
-      MPI_Comm_free(&sub);
-    }
-  }
+  const std::vector<std::vector<double>> runs = onRankCounts([&](MPI_Comm sub) {
+    Simulation sim(sub, RunConfig(c));
+    for (int k = 0; k < 25; ++k) sim.advance(c.time.dt);
+    return particleState(sub, sim);
+  });
   bool ok = true;
   if (rank == 0) {
     INFO("1 rank: z = " << runs[0][2] << ", w = " << runs[0][5] << ", F_z = " << runs[0][8]);
     CHECK(runs[0][5] < -0.01);  // it is falling
-    for (std::size_t s = 1; s < runs.size(); ++s)
-      for (int m = 0; m < 9; ++m) {
-        const double scale = m < 3 ? 0.1 : (m < 6 ? std::fabs(runs[0][5]) : std::fabs(runs[0][8]));
-        INFO("ranks " << s + 1 << ", entry " << m << ": " << runs[s][m] << " vs " << runs[0][m]);
-        const bool same = std::fabs(runs[s][m] - runs[0][m]) <= 1e-6 * scale;
-        ok = ok && same;
-        CHECK(same);
-      }
+    ok = sameOnRankCounts(runs);
   }
   REQUIRE(allRanks(PETSC_COMM_WORLD, ok));
 }
@@ -242,15 +263,7 @@ TEST_CASE("Replaced gap patches: a pair settling near the floor the same on 1, 2
     for (int k = 0; k < 8; ++k) sim.advance(c.time.dt);
     return particleState(comm, sim);
   };
-  std::vector<std::vector<double>> runs;
-  for (int s = 1; s <= size; ++s) {
-    MPI_Comm sub;
-    MPI_Comm_split(PETSC_COMM_WORLD, rank < s ? 0 : MPI_UNDEFINED, rank, &sub);
-    if (sub != MPI_COMM_NULL) {
-      runs.push_back(run(sub, "replace"));
-      MPI_Comm_free(&sub);
-    }
-  }
+  const std::vector<std::vector<double>> runs = onRankCounts([&](MPI_Comm sub) { return run(sub, "replace"); });
   const std::vector<double> added = run(PETSC_COMM_WORLD, "add");
   bool ok = true;
   if (rank == 0) {
@@ -258,14 +271,7 @@ TEST_CASE("Replaced gap patches: a pair settling near the floor the same on 1, 2
                                  << "; add: F = " << added[6] << ", " << added[8]);
     CHECK(runs[0][5] < 0);  // it is settling
     CHECK(std::fabs(runs[0][8] - added[8]) > 1e-3 * std::fabs(added[8]));  // the patches left out
-    for (std::size_t s = 1; s < runs.size(); ++s)
-      for (int m = 0; m < 9; ++m) {
-        const double scale = m < 3 ? 0.1 : (m < 6 ? std::fabs(runs[0][5]) : std::fabs(runs[0][8]));
-        INFO("ranks " << s + 1 << ", entry " << m << ": " << runs[s][m] << " vs " << runs[0][m]);
-        const bool same = std::fabs(runs[s][m] - runs[0][m]) <= 1e-6 * scale;
-        ok = ok && same;
-        CHECK(same);
-      }
+    ok = sameOnRankCounts(runs);
   }
   REQUIRE(allRanks(PETSC_COMM_WORLD, ok));
 }
