@@ -891,7 +891,7 @@ def replacement():
         ax.set_ylabel("error against exact (%)")
         ax.set_title(title, fontsize=9)
         ax.legend(fontsize=7)
-    fig.suptitle("-lub_coupling add and replace (from %g cells) against exact Stokes resistances, d/dx %d" % (REPLACEMENT_CELLS, r),
+    fig.suptitle("-lub_coupling add and replace (h_act %g cell) against exact Stokes resistances, d/dx %d" % (REPLACEMENT_CELLS, r),
                  fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_replacement.png"), dpi=120)
