@@ -413,7 +413,7 @@ PairForce DemSolver::gapForce(const GapSide& i, const GapSide& j, const Vec3& n,
   const Vec3 squeeze = lubricationForce(film, st, contactGap, scale).forceI;
   const OsculatingSphere oj = j.shape ? osculating(Kj, j.point, -n, j.v, j.w) : OsculatingSphere{kWallRadius, {}, j.v, {}};
   const PairForce shear = shapedShear(film, st, osculating(Ki, i.point, n, i.v, i.w), oj, contactGap, scale);
-  if (lubWatch_) watchLubrication(st, contactGap, invMassSum);
+  if (lubWatch_) watchLubrication(st, contactGap, invMassSum, scale);
   return {squeeze + shear.forceI, cross(i.lever, squeeze) + shear.torqueI, shear.torqueJ + cross(squeeze, j.lever)};
 }
 
@@ -761,11 +761,11 @@ long DemSolver::requiredSubsteps(double dtp) const
   return static_cast<long>(std::ceil(pc_.substeps * dtp / lubStableSubstep_));
 }
 
-void DemSolver::watchLubrication(const PairState& st, double contactGap, double invMassSum)
+void DemSolver::watchLubrication(const PairState& st, double contactGap, double invMassSum, double scale)
 {
   // The BLCM resistance bounds the LLCM's (docs/lubrication.md): c = 6 pi mu R^2 (1/h - 1/h_act),
   // and 6 pi mu R^2 / h the whole squeeze of a replaced pair (-lub_coupling replace).
-  const double a = std::min(st.radiusI, st.radiusJ), R = st.reducedRadius();
+  const double a = scale > 0 ? scale : std::min(st.radiusI, st.radiusJ), R = st.reducedRadius();
   const double h = std::max({st.gap, lub_.saturation * a, contactGap});
   const double hAct = std::max(handOff_.departureGap(), lub_.activationGap(a));  // the departure's, if larger
   const double c = (st.slipWall ? 0.25 : 1) * 6 * M_PI * mu_ * R * R * (1 / h - (lub_.replace ? 0 : 1 / hAct));

@@ -122,7 +122,8 @@ private:
   // With a sub-step beyond the bound: the largest c (1/m_i + 1/m_j) a lubricating pair reaches
   // (recorded in the force loop), and the collective check after the fluid step (InputError
   // naming the options once a pair is unstable).
-  void watchLubrication(const PairState& st, double contactGap, double invMassSum);
+  // scale: the length of the activation and saturation gaps (lubricationForce's; 0: the smaller radius).
+  void watchLubrication(const PairState& st, double contactGap, double invMassSum, double scale = 0);
   void checkLubricationSeen(double dtp);
   void noteOverlap(double fraction, std::int64_t i, std::int64_t j)
   {
