@@ -7,6 +7,7 @@ void LubricationPatches::find(const ParticleStore& s)
 {
   patches_.clear();
   replaced_.clear();
+  atWalls_.clear();
   const std::size_t n = s.size();
   auto add = [&](std::size_t p, const Vec3& normal, double R, double a) {
     patches_.push_back({p, normal, lub_.patchRadiusSquared(R, a)});
@@ -23,8 +24,9 @@ void LubricationPatches::find(const ParticleStore& s)
       const Wall& w = walls_[f];
       const double a = s.radius[p];
       if (!w.active || !(w.distance(s.x[p]) - a < lub_.activationGap(a))) continue;
-      add(p, -1.0 * w.normal(), a, a);
+      add(p, -w.normal(), a, a);
       replaced_.push_back({-1 - f, s.id[p]});  // a wall's key sorts first
+      atWalls_.push_back(s.id[p]);
     }
   }
   if (n > 1) {
@@ -45,6 +47,7 @@ void LubricationPatches::find(const ParticleStore& s)
   for (const Patch& q : patches_) ++begin_[q.particle + 1];
   for (std::size_t p = 0; p < n; ++p) begin_[p + 1] += begin_[p];
   std::sort(replaced_.begin(), replaced_.end());
+  std::sort(atWalls_.begin(), atWalls_.end());
 }
 
 bool LubricationPatches::replaced(std::int64_t idI, std::int64_t idJ) const

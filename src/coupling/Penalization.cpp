@@ -231,8 +231,7 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
     const Vec3 t = cross(r, f);
     // In a gap patch the analytic squeeze stands for the normal force; its moment (the pressure of
     // the tangential motions) stays resolved.
-    if (patches && patches->any(p))
-      if (const Vec3* n = patches->patchAt(p, r)) f -= (f[c] * (*n)[c]) * *n;
+    if (const Vec3* n = patches ? patches->patchAt(p, r) : nullptr) f -= (f[c] * (*n)[c]) * *n;
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {
       sum[m] += f[m];

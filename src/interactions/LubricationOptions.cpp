@@ -35,7 +35,7 @@ LubricationParams readLubricationOptions()
                        "How the correction meets the resolved force: add (the unresolved part F(h) - F(h_act) on top of the "
                        "whole resolved force) or replace (the seed's local LLCM: below h_act the resolved normal force over "
                        "each gap's patch is removed and the lubrication squeeze over that patch applied; needs -lub_model "
-                       "llcm; docs/lubrication.md)")== 1;
+                       "llcm; docs/lubrication.md)") == 1;
   p.patchGap = o.real("-lub_patch_gap", p.patchGap,
                       "With -lub_coupling replace: the patch is the disk where the gap is below h + delta, delta = this "
                       "times the smaller radius (0.25: r0 = a/2 between equal spheres, 0.71 a at a wall)");

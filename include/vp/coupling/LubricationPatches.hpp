@@ -4,20 +4,20 @@
 // of every fluid step, each pair of spheres and each sphere and wall closer than the activation gap
 // h_act gives both its surfaces a patch: the disk r < r0 around the line of centres, on the side
 // facing the gap, where the gap is below h + delta (r0^2 = 2 R delta, R the reduced radius, a at a
-// wall; delta = -lub_patch_gap times the smaller radius). The normal part (along
-// the line of centres) of the penalization force of the faces a sphere owns within its patches'
-// cylinders is left out of its resolved force, not of its torque (Penalization::forces; the moment
-// carries the pressure of the tangential motions), and the DEM applies the whole
-// lubrication squeeze over the disk to those pairs for the whole step (LubricationModel.hpp), whatever their
-// gap during it. The tangential parts stay resolved, with the added correction below their own
-// activation gap: replaced too, they fell 22-33 % short of the exact sliding resistance at d/dx 12
-// (docs/lubrication.md). Found from the positions
-// every rank holds, owned and ghost spheres alike: every rank that holds faces of a sphere or
-// computes one of its pairs agrees on its patches.
+// wall; delta = -lub_patch_gap times the smaller radius). The normal part (along the line of
+// centres) of the penalization force on the faces a sphere owns within its patches' cylinders
+// leaves its resolved force, not its torque (Penalization::forces; the moment carries the pressure
+// of the tangential motions), and the DEM gives those pairs the whole lubrication squeeze over the
+// disk for the whole step, whatever their gap during it (LubricationModel.hpp). The tangential
+// terms stay resolved, with the added correction below their own activation gap (replaced too,
+// they fell 22-33 % short of the exact sliding resistance at d/dx 12: docs/lubrication.md). Found
+// from the positions every rank holds, owned and ghost spheres alike: every rank that holds faces
+// of a sphere or computes one of its pairs agrees on its patches.
 #include "vp/interactions/LubricationModel.hpp"
 #include "vp/particles/CellBuckets.hpp"
 #include "vp/particles/ParticleStore.hpp"
 #include "vp/particles/Walls.hpp"
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -43,12 +43,7 @@ public:
   bool any(std::size_t p) const { return begin_[p] < begin_[p + 1]; }
   // Whether the pair of these ids (a wall as -1 - face) had its patches taken out at the step's start.
   bool replaced(std::int64_t idI, std::int64_t idJ) const;
-  bool replacedAtWall(std::int64_t id) const
-  {
-    for (int f = 0; f < 6; ++f)
-      if (walls_[f].active && replaced(id, -1 - f)) return true;
-    return false;
-  }
+  bool replacedAtWall(std::int64_t id) const { return std::binary_search(atWalls_.begin(), atWalls_.end(), id); }
   std::size_t pairs() const { return replaced_.size(); }
 
 private:
@@ -63,6 +58,7 @@ private:
   std::vector<Patch> patches_;                                   // sorted by particle
   std::vector<std::size_t> begin_{0};                            // per local particle, into patches_
   std::vector<std::pair<std::int64_t, std::int64_t>> replaced_;  // (lower id, higher id), sorted
+  std::vector<std::int64_t> atWalls_;                            // ids with a wall pair replaced, sorted
 };
 
 } // namespace vp

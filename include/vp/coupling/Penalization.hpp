@@ -48,7 +48,8 @@ public:
   double lambda() const { return stepLambda_; }  // of the step last built
   // sums (kHydroSums per particle) resized and zeroed, then the force and torque of the
   // penalization on each particle, rho chi lambda (u* - u_s) dV, from the predicted velocity u*.
-  // patches (-lub_coupling replace): the faces in a particle's gap patches are left out.
+  // patches (-lub_coupling replace): the normal part of the force on the faces in a particle's gap
+  // patches is left out (not its torque).
   void forces(const ParticleStore& s, Vec uStar, std::vector<double>& sums, const LubricationPatches* patches = nullptr);
   // From enableStresslets on, forces() also sums the first moment of the force density on the
   // particles whose centre lies in lo <= z <= hi: sum over them of the integral of
