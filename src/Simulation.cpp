@@ -65,6 +65,11 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
     dem_->setPatches(patches_.get());
   }
   fluid_ = std::make_unique<Projection>(grid_, cfg_, rc.solvers, penalization_ && rc.penalization.weightedProjection);
+  if (rc.solvers.viscousMgLevels > 1) {
+    const int levels = fluid_->diffusionSolver().multigridLevels();
+    PetscPrintf(grid_.comm(), "vpsolve: viscous CG preconditioned by a multigrid V-cycle over %d grids%s\n", levels,
+                levels < rc.solvers.viscousMgLevels ? " (fewer than -velocity_mg_levels: the grid or its split cannot be halved further)" : "");
+  }
   if (restart)
     restore(*restart);
   else {

@@ -4,16 +4,18 @@
 #include "vp/core/VecValues.hpp"
 #include "vp/core/VectorClones.hpp"
 #include "vp/fluid/SolverOptions.hpp"
+#include "vp/fluid/ViscousMultigrid.hpp"
 #include "vp/grid/Boundary.hpp"
 #include "vp/grid/FieldArray.hpp"
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace vp {
 
-DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op)
+DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op, int mgLevels)
   : grid_(grid), bc_(bc), ghosts_(grid.faceSolveDM())
 {
   assembled_ = op == ViscousOperator::Assembled;
@@ -74,13 +76,19 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, Vis
       throw InputError(std::string("option -velocity_operator: fused is CG + Jacobi; for -velocity_ksp_type ") + kt +
                        " -velocity_pc_type " + pt + " choose -velocity_operator shell (or assembled)");
     for (Vec* v : {&r_, &q_, &dinv_}) VP_CALL(DMCreateGlobalVector(f, v));
+    if (mgLevels > 1) {
+      mg_ = std::make_unique<ViscousMultigrid>(*this, grid, bc, mgLevels);
+      if (mg_->levels() < 2) mg_.reset();  // the grid cannot be halved: Jacobi
+      else VP_CALL(DMCreateLocalVector(f, &z_));
+    }
   }
 }
 
 DiffusionSolver::~DiffusionSolver()
 {
   KSPDestroy(&ksp_);
-  for (Vec* v : {&S_, &SdiagL_, &diag_, &xL_, &r_, &q_, &dinv_}) VecDestroy(v);
+  mg_.reset();
+  for (Vec* v : {&S_, &SdiagL_, &diag_, &xL_, &r_, &q_, &dinv_, &z_}) VecDestroy(v);
   MatDestroy(&shell_);
   MatDestroy(&A_);
   MatDestroy(&SL_);
@@ -152,20 +160,101 @@ void DiffusionSolver::assemble()
   VP_CALL(MatAssemblyEnd(SL_, MAT_FINAL_ASSEMBLY));
 }
 
+DiffusionSolver::Weights DiffusionSolver::weights(const PetscInt gm[3]) const
+{
+  Weights w;
+  for (int d = 0; d < 3; ++d) w.w[d] = a_ / (grid_.h(d) * grid_.h(d));
+  w.centre = 1 + 2 * (w.w[0] + w.w[1] + w.w[2]);
+  w.stride[0] = 3;
+  w.stride[1] = 3 * gm[0];
+  w.stride[2] = 3 * gm[0] * gm[1];
+  return w;
+}
+
+// One grid row of y = S (1 + theta) x - a S L x; x ghosted, theta may be null. __restrict: y never
+// aliases x, S or theta, so the compiler may vectorise the row.
+VP_VECTOR_CLONES void DiffusionSolver::stencilRow(PetscInt row, const Weights& w, const PetscScalar* __restrict xr,
+                                                  const PetscScalar* __restrict sr, const PetscScalar* __restrict tr,
+                                                  PetscScalar* __restrict yr)
+{
+  const double wx = w.w[0], wy = w.w[1], wz = w.w[2], wc = w.centre;
+  const PetscInt sx = w.stride[0], sy = w.stride[1], sz = w.stride[2];
+  if (tr) {
+    for (PetscInt n = 0; n < row; ++n)
+      yr[n] = sr[n] * ((wc + tr[n]) * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
+                       wz * (xr[n + sz] + xr[n - sz]));
+  } else {
+    for (PetscInt n = 0; n < row; ++n)
+      yr[n] = sr[n] * (wc * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
+                       wz * (xr[n + sz] + xr[n - sz]));
+  }
+}
+
+namespace {
+
+// out = b - y (omega 0: the residual), else out = x + omega dinv (b - y) (a damped Jacobi sweep);
+// returns b.out.
+VP_VECTOR_CLONES double jacobiRow(PetscInt n, double omega, const PetscScalar* __restrict x, const PetscScalar* __restrict y,
+                                  const PetscScalar* __restrict b, const PetscScalar* __restrict dinv, PetscScalar* __restrict out)
+{
+  double bo = 0;
+  if (omega == 0) {
+#pragma omp simd
+    for (PetscInt i = 0; i < n; ++i) out[i] = b[i] - y[i];
+    return 0;
+  }
+#pragma omp simd reduction(+ : bo)
+  for (PetscInt i = 0; i < n; ++i) {
+    out[i] = x[i] + omega * dinv[i] * (b[i] - y[i]);
+    bo += b[i] * out[i];
+  }
+  return bo;
+}
+
+} // namespace
+
+double DiffusionSolver::sweep(Vec x, Vec b, double omega, Vec out) const
+{
+  const Grid& g = grid_;
+  refreshGhosts(x);
+  PetscInt gs[3], gm[3];
+  VP_CALL(DMDAGetGhostCorners(g.faceSolveDM(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  const Weights w = weights(gm);
+  ReadValues xl(x), bv(b), sv(S_), dv(dinv_);
+  const PetscScalar* th = nullptr;
+  if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
+  WriteValues ov(out);
+  std::vector<PetscScalar> y(3 * (g.end(0) - g.start(0)));  // one row of A x, kept in cache
+  double bo = 0;
+  forRows([&](PetscInt o, PetscInt l, PetscInt len) {
+    stencilRow(len, w, xl + l, sv + o, th ? th + o : nullptr, y.data());
+    bo += jacobiRow(len, omega, xl + l, y.data(), bv + o, dv + o, ov + l);
+  });
+  if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
+  return bo;
+}
+
 // y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
 // 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
 // row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
-VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
+void DiffusionSolver::refreshGhosts(Vec local) const
+{
+  if (grid_.exchangesGhosts()) ghosts_.apply(local);
+  FaceArray xa(grid_.faceSolveDM(), local);
+  fillFaceGhosts(grid_, bc_, xa.a, true);
+}
+
+int DiffusionSolver::multigridLevels() const { return mg_ ? mg_->levels() : 1; }
+
+VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local) const
 {
   const Grid& g = grid_;
   DM f = g.faceSolveDM();
   const Vec xLocal = local ? x : xL_;
   if (local) {
-    if (g.exchangesGhosts()) ghosts_.apply(x);
+    refreshGhosts(x);
   } else {
     VP_CALL(DMGlobalToLocal(f, x, INSERT_VALUES, xL_));
-  }
-  {
     FaceArray xa(f, xLocal);
     fillFaceGhosts(g, bc_, xa.a, true);
   }
@@ -179,28 +268,16 @@ VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool loca
   VP_CALL(VecGetArrayRead(S_, &s));
   if (theta_) VP_CALL(VecGetArrayRead(theta_, &th));
   VP_CALL(VecGetArray(y, &ya));
-  const double wx = a_ / (g.h(0) * g.h(0)), wy = a_ / (g.h(1) * g.h(1)), wz = a_ / (g.h(2) * g.h(2));
-  const double wc = 1 + 2 * (wx + wy + wz);
+  const Weights w = weights(gm);
   const PetscInt sx = 3, sy = 3 * gm[0], sz = 3 * gm[0] * gm[1];
   const PetscInt row = 3 * (g.end(0) - g.start(0));
   double xy = 0;
   PetscInt o = 0;  // owned (global-vector) offset of the row
   for (PetscInt k = g.start(2); k < g.end(2); ++k)
     for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
-      // __restrict: y never aliases x, S or theta, so the compiler may vectorise the row.
-      const PetscScalar* __restrict xr = xl + (k - gs[2]) * sz + (j - gs[1]) * sy + (g.start(0) - gs[0]) * sx;
-      const PetscScalar* __restrict sr = s + o;
-      PetscScalar* __restrict yr = ya + o;
-      if (th) {
-        const PetscScalar* __restrict tr = th + o;
-        for (PetscInt n = 0; n < row; ++n)
-          yr[n] = sr[n] * ((wc + tr[n]) * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
-                           wz * (xr[n + sz] + xr[n - sz]));
-      } else {
-        for (PetscInt n = 0; n < row; ++n)
-          yr[n] = sr[n] * (wc * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
-                           wz * (xr[n + sz] + xr[n - sz]));
-      }
+      const PetscScalar* xr = xl + (k - gs[2]) * sz + (j - gs[1]) * sy + (g.start(0) - gs[0]) * sx;
+      stencilRow(row, w, xr, s + o, th ? th + o : nullptr, ya + o);
+      const PetscScalar* yr = ya + o;
       if (dot) {  // the row is still in cache; a local x is zero on the fixed faces (fusedSolve)
         double sum = 0;
 #pragma omp simd reduction(+ : sum)
@@ -267,6 +344,7 @@ void DiffusionSolver::setOperator(double a, Vec theta)
   } else if (fused_) {
     VP_CALL(diagonal(shell_, dinv_));
     VP_CALL(VecReciprocal(dinv_));
+    if (mg_) mg_->setOperator(a, theta);
     return;
   } else {
     // A new state, so that the preconditioner rebuilds its diagonal.
@@ -338,36 +416,44 @@ VP_VECTOR_CLONES void newDirection(PetscInt n, double beta, const PetscScalar* _
   for (PetscInt i = 0; i < n; ++i) p[i] = dinv[i] * r[i] + beta * p[i];
 }
 
+// The same passes without Jacobi (multigrid: the preconditioner is a separate pass). r = b - Ax;
+// sums r.r, b.b.
+VP_VECTOR_CLONES void residualSums(PetscInt n, const PetscScalar* __restrict b, const PetscScalar* __restrict ax,
+                  PetscScalar* __restrict r, double sums[2])
+{
+  double rr = 0, bb = 0;
+#pragma omp simd reduction(+ : rr, bb)
+  for (PetscInt i = 0; i < n; ++i) {
+    r[i] = b[i] - ax[i];
+    rr += r[i] * r[i];
+    bb += b[i] * b[i];
+  }
+  sums[0] = rr;
+  sums[1] = bb;
+}
+
+// x += alpha p; r -= alpha q; returns r.r.
+VP_VECTOR_CLONES double updateSums(PetscInt n, double alpha, const PetscScalar* __restrict p, const PetscScalar* __restrict ap,
+                  PetscScalar* __restrict x, PetscScalar* __restrict r)
+{
+  double rr = 0;
+#pragma omp simd reduction(+ : rr)
+  for (PetscInt i = 0; i < n; ++i) {
+    x[i] += alpha * p[i];
+    r[i] -= alpha * ap[i];
+    rr += r[i] * r[i];
+  }
+  return rr;
+}
+
+// p = z + beta p (both in the local layout).
+VP_VECTOR_CLONES void newDirectionFrom(PetscInt n, double beta, const PetscScalar* __restrict z, PetscScalar* __restrict p)
+{
+#pragma omp simd
+  for (PetscInt i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
+}
+
 } // namespace
-
-template <class F>
-void DiffusionSolver::forRows(F f) const
-{
-  const Grid& g = grid_;
-  PetscInt gs[3], gm[3];
-  VP_CALL(DMDAGetGhostCorners(g.faceSolveDM(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
-  const PetscInt row = 3 * (g.end(0) - g.start(0));
-  PetscInt o = 0;
-  for (PetscInt k = g.start(2); k < g.end(2); ++k)
-    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row)
-      f(o, 3 * (((k - gs[2]) * gm[1] + (j - gs[1])) * gm[0] + g.start(0) - gs[0]), row);
-}
-
-template <class F>
-void DiffusionSolver::forFixedFaces(F f) const
-{
-  const Grid& g = grid_;
-  const PetscInt row = 3 * (g.end(0) - g.start(0));
-  PetscInt o = 0;
-  for (PetscInt k = g.start(2); k < g.end(2); ++k)
-    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
-      if (g.atLow(0)) f(o);
-      if (j == 0 && g.atLow(1))
-        for (PetscInt n = 1; n < row; n += 3) f(o + n);
-      if (k == 0 && g.atLow(2))
-        for (PetscInt n = 2; n < row; n += 3) f(o + n);
-    }
-}
 
 int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
 {
@@ -388,11 +474,20 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     ReadValues bv(b), dv(dinv_);
     forFixedFaces([&](PetscInt o) { xv[o] = bv[o] * dv[o]; });
   }
-  // r = b - A x; p = D^-1 r; sums r.D^-1 r, r.r, b.b. p lives in xL_ (the ghosted layout, free
+  // r = b - A x; z = M r; sums r.z, r.r, b.b; p = z. p lives in xL_ (the ghosted layout, free
   // once A x is taken): its products need no copy into one.
   apply(x, q_, false);
   double sums[3] = {0, 0, 0};
-  {
+  if (mg_) {
+    ReadValues bv(b), qv(q_);
+    WriteValues rv(r_);
+    forRows([&](PetscInt o, PetscInt, PetscInt len) {
+      double s2[2];
+      residualSums(len, bv + o, qv + o, rv + o, s2);
+      sums[1] += s2[0];
+      sums[2] += s2[1];
+    });
+  } else {
     ReadValues bv(b), qv(q_), dv(dinv_);
     WriteValues rv(r_), pv(xL_);
     forRows([&](PetscInt o, PetscInt l, PetscInt len) {
@@ -402,21 +497,35 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     });
   }
   MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
-  double rz = sums[0];
   // PETSc's default test on the unpreconditioned residual: ||r|| <= max(rtol ||b||, atol).
   const double tol = std::max(rtol * std::sqrt(sums[2]), static_cast<double>(abstol));
   if (std::sqrt(sums[1]) <= tol) return 0;
+  // The multigrid's r.z (after the residual test: no cycle for a converged start).
+  auto precondition = [&] {
+    double rz = mg_->apply(r_, z_);
+    MPI_Allreduce(MPI_IN_PLACE, &rz, 1, MPI_DOUBLE, MPI_SUM, comm);
+    return rz;
+  };
+  double rz = sums[0];
+  if (mg_) {
+    rz = precondition();
+    VP_CALL(VecCopy(z_, xL_));
+  }
   for (PetscInt it = 1; it <= maxIts; ++it) {
     double pq = apply(xL_, q_, true, true);
     MPI_Allreduce(MPI_IN_PLACE, &pq, 1, MPI_DOUBLE, MPI_SUM, comm);
     if (!(pq > 0)) fail("the operator is not positive definite (p.Ap = " + std::to_string(pq) + ")");
     const double alpha = rz / pq;
-    // x += alpha p; r -= alpha q; sums r.D^-1 r and r.r.
+    // x += alpha p; r -= alpha q; sums r.D^-1 r (Jacobi) and r.r.
     double s2[2] = {0, 0};
     {
       ReadValues pv(xL_), qv(q_), dv(dinv_);
       WriteValues xv(x), rv(r_);
       forRows([&](PetscInt o, PetscInt l, PetscInt len) {
+        if (mg_) {
+          s2[1] += updateSums(len, alpha, pv + l, qv + o, xv + o, rv + o);
+          return;
+        }
         double row[2];
         update(len, alpha, pv + l, qv + o, dv + o, xv + o, rv + o, row);
         s2[0] += row[0];
@@ -427,7 +536,16 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     const double rnorm = std::sqrt(s2[1]);
     if (!std::isfinite(rnorm)) fail("the residual is not finite");
     if (rnorm <= tol) return static_cast<int>(it);
-    // p = D^-1 r + beta p.
+    // p = z + beta p.
+    if (mg_) {
+      const double rzNew = precondition();
+      const double beta = rzNew / rz;
+      rz = rzNew;
+      ReadValues zv(z_);
+      WriteValues pv(xL_);
+      forRows([&](PetscInt, PetscInt l, PetscInt len) { newDirectionFrom(len, beta, zv + l, pv + l); });
+      continue;
+    }
     const double beta = s2[0] / rz;
     rz = s2[0];
     ReadValues rv(r_), dv(dinv_);

@@ -22,7 +22,7 @@ double norm2(Vec v)
 
 Projection::Projection(const Grid& grid, const Config& cfg, const SolverOptions& solvers, bool weighted)
   : grid_(grid), bc_(cfg.bc), rho_(cfg.fluid.rho), nu_(cfg.fluid.nu()), force_(cfg.fluid.bodyForce),
-    diffusion_(grid, cfg.bc, solvers.viscousOperator), pressure_(grid, solvers, weighted), weighted_(weighted)
+    diffusion_(grid, cfg.bc, solvers.viscousOperator, solvers.viscousMgLevels), pressure_(grid, solvers, weighted), weighted_(weighted)
 {
   DM f = grid.faceDM(), c = grid.cellDM();
   for (Vec* v : {&u_, &N_, &Nold_, &rhs_, &du_, &duOld_}) VP_CALL(DMCreateGlobalVector(f, v));

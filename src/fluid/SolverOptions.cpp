@@ -22,6 +22,12 @@ SolverOptions readSolverOptions()
                "Viscous operator and solver: fused (matrix-free sweep in a hand-fused CG + Jacobi, fastest), shell "
                "(the same operator under PETSc's KSP: any -velocity_ksp/pc option that needs only products and the "
                "diagonal, monitors) or assembled (AIJ, for preconditioners that need a matrix: hypre, gamg)"));
+  s.viscousMgLevels = o.integer("-velocity_mg_levels", 1, "Grids of the geometric multigrid V-cycle that preconditions the fused "
+                                "viscous CG (1: Jacobi; fewer where the grid or its split cannot be halved; docs/fluid.md)");
+  if (!optionsHelpMode() && (s.viscousMgLevels < 1 || s.viscousMgLevels > 8))
+    failOption("-velocity_mg_levels", "must be in [1, 8], got " + std::to_string(s.viscousMgLevels));
+  if (!optionsHelpMode() && s.viscousMgLevels > 1 && s.viscousOperator != ViscousOperator::Fused)
+    failOption("-velocity_mg_levels", "the multigrid preconditions the fused CG only (-velocity_operator fused)");
   o.real("-velocity_ksp_rtol", 1e-6, "Viscous relative tolerance (measured choice, docs/fluid.md)");
   return s;
 }

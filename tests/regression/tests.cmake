@@ -25,6 +25,9 @@ vp_bad_input(grid_ranks_fraction 1 "option -grid_ranks: needs whole numbers >= 0
 vp_bad_input(fft_too_many_ranks 3 "option -pressure_pc_type: fft splits the z axis into slabs, one z cell per rank at least: 3 ranks for 2 z cells"
              -grid_n 8,8,2 -pressure_pc_type fft)
 vp_bad_input(pressure_guesses_out_of_range 1 "option -pressure_guesses: must be in \\[0, 50\\], got -1" -pressure_guesses -1)
+vp_bad_input(velocity_mg_levels_out_of_range 1 "option -velocity_mg_levels: must be in \\[1, 8\\], got 0" -velocity_mg_levels 0)
+vp_bad_input(velocity_mg_without_fused 1 "option -velocity_mg_levels: the multigrid preconditions the fused CG only"
+             -velocity_mg_levels 3 -velocity_operator shell)
 vp_bad_input(missing_options_file 2 "option -options_file: cannot open 'no/such/case.opts'" -options_file no/such/case.opts)
 vp_bad_input(negative_output_every 1 "option -output_every: must be >= 0" -output_every -1)
 vp_bad_input(negative_output_dt 1 "option -output_dt: must be >= 0" -output_dt -0.5)

@@ -10,18 +10,25 @@
 // pass updates x and r and forms both residual dot products, one pass the search direction; PETSc's
 // CG makes seven vector passes per iteration). -velocity_operator shell gives the same operator to
 // PETSc's KSP (other Krylov methods, monitors); -velocity_operator assembled builds the AIJ matrix
-// for preconditioners that need one (hypre, gamg), useful when nu dt / h^2 is large (docs/fluid.md).
+// for preconditioners that need one (hypre, gamg). With -velocity_mg_levels > 1 the fused CG is
+// preconditioned by a geometric multigrid V-cycle (ViscousMultigrid.hpp) instead of Jacobi: its
+// iterations stay few as nu dt / h^2 grows (docs/fluid.md).
 #include "vp/core/Config.hpp"
+#include "vp/core/Error.hpp"
 #include "vp/fluid/SolverOptions.hpp"
 #include "vp/grid/GhostRefresh.hpp"
 #include "vp/grid/Grid.hpp"
+#include <memory>
 #include <petscksp.h>
 
 namespace vp {
 
+class ViscousMultigrid;
+
 class DiffusionSolver {
 public:
-  DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op);
+  // mgLevels: the fused CG's preconditioner, 1 Jacobi, more a multigrid V-cycle of at most that many grids.
+  DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, ViscousOperator op, int mgLevels = 1);
   ~DiffusionSolver();
   DiffusionSolver(const DiffusionSolver&) = delete;
   DiffusionSolver& operator=(const DiffusionSolver&) = delete;
@@ -41,7 +48,24 @@ public:
   // y = A x. x global, or local (its owned values set, zero on the fixed wall faces; the ghosts
   // are updated here) when `local` is set, as in the fused CG; then `dot` also returns this rank's
   // part of x.y.
-  double apply(Vec x, Vec y, bool dot, bool local = false);
+  double apply(Vec x, Vec y, bool dot, bool local = false) const;
+  // One sweep of A over a local x (owned values set; ghosts refreshed here) with b global: out =
+  // b - A x (omega 0), or the damped Jacobi step out = x + omega D^-1 (b - A x); out local, not x.
+  // The fixed wall faces of out are left to the next ghost refresh (it zeroes them). Returns b.out.
+  double sweep(Vec x, Vec b, double omega, Vec out) const;
+  // The ghosts of a local vector from its owned values: neighbours' values, homogeneous wall rules.
+  void refreshGhosts(Vec local) const;
+  // 1 / diag of the operator last set (fused operator).
+  Vec inverseDiagonal() const { return dinv_; }
+  // The grids of the fused CG's multigrid preconditioner (1: Jacobi).
+  int multigridLevels() const;
+  const ViscousMultigrid* multigrid() const { return mg_.get(); }
+  // f(global offset, local offset, length) for every owned grid row of 3 nx values.
+  template <class F>
+  void forRows(F f) const;
+  // f(global offset) for every owned fixed wall face (face 0 of a wall-bounded axis).
+  template <class F>
+  void forFixedFaces(F f) const;
 
   // One face's row of S L: weight S, diagonal and the coefficients to the -1 / +1 neighbours.
   struct Row {
@@ -51,15 +75,16 @@ public:
   Row row(int c, const PetscInt p[3]) const;
 
 private:
+  struct Weights {
+    double w[3], centre;  // a / h^2 per axis, 1 + 2 sum of them
+    PetscInt stride[3];   // of the ghosted local array
+  };
+  Weights weights(const PetscInt ghostSize[3]) const;
+  static void stencilRow(PetscInt row, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
+                         const PetscScalar* tr, PetscScalar* yr);
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
-  // f(global offset, local offset, length) for every owned grid row of 3 nx values.
-  template <class F>
-  void forRows(F f) const;
-  // f(global offset) for every owned fixed wall face (face 0 of a wall-bounded axis).
-  template <class F>
-  void forFixedFaces(F f) const;
   // CG + Jacobi on A du = b with PETSc's default convergence test on the unpreconditioned residual.
   int fusedSolve(Vec b, Vec du, double atol);
 
@@ -72,8 +97,39 @@ private:
   Vec theta_ = nullptr;
   Vec r_ = nullptr, q_ = nullptr, dinv_ = nullptr;  // fused CG: residual, A p, 1/diag (the direction: xL_)
   KSP ksp_ = nullptr;
+  std::unique_ptr<ViscousMultigrid> mg_;
+  Vec z_ = nullptr;  // the preconditioned residual in the local layout (multigrid)
   double a_ = -1;
   bool userAtol_ = false;
 };
+
+template <class F>
+inline void DiffusionSolver::forRows(F f) const
+{
+  const Grid& g = grid_;
+  PetscInt gs[3], gm[3];
+  VP_CALL(DMDAGetGhostCorners(g.faceSolveDM(), &gs[0], &gs[1], &gs[2], &gm[0], &gm[1], &gm[2]));
+  const PetscInt row = 3 * (g.end(0) - g.start(0));
+  PetscInt o = 0;
+  for (PetscInt k = g.start(2); k < g.end(2); ++k)
+    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row)
+      f(o, 3 * (((k - gs[2]) * gm[1] + (j - gs[1])) * gm[0] + g.start(0) - gs[0]), row);
+}
+
+template <class F>
+inline void DiffusionSolver::forFixedFaces(F f) const
+{
+  const Grid& g = grid_;
+  const PetscInt row = 3 * (g.end(0) - g.start(0));
+  PetscInt o = 0;
+  for (PetscInt k = g.start(2); k < g.end(2); ++k)
+    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
+      if (g.atLow(0)) f(o);
+      if (j == 0 && g.atLow(1))
+        for (PetscInt n = 1; n < row; n += 3) f(o + n);
+      if (k == 0 && g.atLow(2))
+        for (PetscInt n = 2; n < row; n += 3) f(o + n);
+    }
+}
 
 } // namespace vp

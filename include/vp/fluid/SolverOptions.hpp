@@ -13,6 +13,7 @@ struct SolverOptions {
   std::string pressureKsp;       // -pressure_ksp_type ("" : cg, or preonly with fft)
   int pressureGuesses = 5;       // -pressure_guesses: earlier solutions that form an iterative solve's start
   ViscousOperator viscousOperator = ViscousOperator::Fused;  // -velocity_operator
+  int viscousMgLevels = 1;       // -velocity_mg_levels: grids of the fused CG's multigrid (1: Jacobi)
 
   // One application of the preconditioner is the solve (fft, unless a Krylov method is given).
   bool directPressure() const { return !pressureKsp.empty() ? pressureKsp == "preonly" : pressurePc == "fft"; }

@@ -4,12 +4,17 @@
 // ownership ranges. Velocity face i-1/2 of cell i is stored at index i (see docs/fluid.md, grid).
 #include "vp/core/Config.hpp"
 #include <petscdmda.h>
+#include <array>
 
 namespace vp {
 
 class Grid {
 public:
   Grid(MPI_Comm comm, const GridConfig& grid, const BoundaryConfig& bc);
+  // The grid of half the cells per axis over the same box and ranks, each rank's coarse cells the
+  // parents of its fine ones (viscous multigrid); only where `fine.coarsenable()`.
+  struct Coarsen {};
+  Grid(const Grid& fine, const Coarsen&);
   ~Grid();
   Grid(const Grid&) = delete;
   Grid& operator=(const Grid&) = delete;
@@ -38,10 +43,18 @@ public:
   // ghost lies outside the domain and is filled by the boundary rules (Boundary.hpp).
   bool exchangesGhosts() const { return exchanges_; }
 
+  // Whether every axis keeps at least minCells cells when halved and every rank's cell range per
+  // axis is even (the coarse decomposition is the fine one halved).
+  bool coarsenable(int minCells) const;
+
   double cellCentre(int d, PetscInt i) const { return lo_[d] + (i + 0.5) * h_[d]; }
   double faceCoord(int d, PetscInt i) const { return lo_[d] + i * h_[d]; }
 
 private:
+  // The four DMDAs on n_ with the given split (and ownership ranges, or PETSc's); false if PETSc
+  // cannot split the grid so.
+  bool createDMs(const PetscInt split[3], std::array<const PetscInt*, 3> ranges);
+
   MPI_Comm comm_;
   DM cellDM_ = nullptr, faceDM_ = nullptr, faceSolveDM_ = nullptr, cellVectorDM_ = nullptr;
   int n_[3];
