@@ -66,9 +66,16 @@ Simulation::Simulation(MPI_Comm comm, const RunConfig& rc)
   }
   fluid_ = std::make_unique<Projection>(grid_, cfg_, rc.solvers, penalization_ && rc.penalization.weightedProjection);
   if (rc.solvers.viscousMgLevels > 1) {
-    const int levels = fluid_->diffusionSolver().multigridLevels();
-    PetscPrintf(grid_.comm(), "vpsolve: viscous CG preconditioned by a multigrid V-cycle over %d grids%s\n", levels,
-                levels < rc.solvers.viscousMgLevels ? " (fewer than -velocity_mg_levels: the grid or its split cannot be halved further)" : "");
+    // Fewer grids than asked where halving stops (Grid::coarsenable).
+    const int want = rc.solvers.viscousMgLevels, levels = fluid_->diffusionSolver().multigridLevels();
+    const char* why = "halving the grid again would leave an axis below 2 cells or a rank's cell range odd";
+    if (levels < 2)
+      PetscPrintf(grid_.comm(), "vpsolve: -velocity_mg_levels %d: %s; the viscous CG keeps Jacobi\n", want, why);
+    else if (levels < want)
+      PetscPrintf(grid_.comm(), "vpsolve: viscous CG preconditioned by a multigrid V-cycle over %d grids, not %d: %s\n", levels,
+                  want, why);
+    else
+      PetscPrintf(grid_.comm(), "vpsolve: viscous CG preconditioned by a multigrid V-cycle over %d grids\n", levels);
   }
   if (restart)
     restore(*restart);

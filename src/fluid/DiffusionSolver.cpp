@@ -65,7 +65,7 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, Vis
   VP_CALL(KSPSetFromOptions(ksp_));
   VP_CALL(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
   if (fused_) {
-    // The fused solver is CG + Jacobi; the KSP only holds the tolerances then.
+    // The fused solver is CG + Jacobi (or the multigrid); the KSP only holds the tolerances then.
     KSPType kt;
     PCType pt;
     PC pc;
@@ -234,9 +234,6 @@ double DiffusionSolver::sweep(Vec x, Vec b, double omega, Vec out) const
   return bo;
 }
 
-// y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
-// 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
-// row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
 void DiffusionSolver::refreshGhosts(Vec local) const
 {
   if (grid_.exchangesGhosts()) ghosts_.apply(local);
@@ -246,7 +243,10 @@ void DiffusionSolver::refreshGhosts(Vec local) const
 
 int DiffusionSolver::multigridLevels() const { return mg_ ? mg_->levels() : 1; }
 
-VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local) const
+// y = S (1 + theta) x - a S L x in one sweep over the ghosted x. Every face component has the same
+// 7-point form once the wall ghosts hold the homogeneous boundary rules (Boundary.hpp), so a grid
+// row of 3 xm values is one contiguous, vectorisable loop; fixed wall faces are identity rows.
+VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool local)
 {
   const Grid& g = grid_;
   DM f = g.faceSolveDM();
@@ -474,8 +474,9 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     ReadValues bv(b), dv(dinv_);
     forFixedFaces([&](PetscInt o) { xv[o] = bv[o] * dv[o]; });
   }
-  // r = b - A x; z = M r; sums r.z, r.r, b.b; p = z. p lives in xL_ (the ghosted layout, free
-  // once A x is taken): its products need no copy into one.
+  // r = b - A x; sums r.r, b.b; with Jacobi also z = D^-1 r in p and r.z in the same pass (the
+  // multigrid's z and r.z follow the residual test). p lives in xL_ (the ghosted layout, free once
+  // A x is taken): its products need no copy into one.
   apply(x, q_, false);
   double sums[3] = {0, 0, 0};
   if (mg_) {
@@ -504,6 +505,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
   auto precondition = [&] {
     double rz = mg_->apply(r_, z_);
     MPI_Allreduce(MPI_IN_PLACE, &rz, 1, MPI_DOUBLE, MPI_SUM, comm);
+    if (!(rz > 0)) fail("the multigrid preconditioner is not positive definite (r.Mr = " + std::to_string(rz) + ")");
     return rz;
   };
   double rz = sums[0];

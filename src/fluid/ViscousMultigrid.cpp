@@ -126,14 +126,15 @@ void ViscousMultigrid::restrictTo(size_t fine, Vec fineLocal, Vec coarseGlobal) 
   const Layout lf(levels_[fine].grid->faceSolveDM()), lc(gc.faceSolveDM());
   ReadValues fv(fineLocal);
   WriteValues cv(coarseGlobal);
+  const PetscInt I0 = gc.start(0), nI = gc.end(0) - I0;
   for (PetscInt K = gc.start(2); K < gc.end(2); ++K)
     for (PetscInt J = gc.start(1); J < gc.end(1); ++J) {
-      // row(dj, dk): the fine row 2J + dj, 2K + dk (dj, dk in -1..1), from its face i = 0.
-      auto row = [&](int dj, int dk) { return fv + lf.local(0, 2 * J + dj, 2 * K + dk); };
+      // row(dj, dk): the fine row 2J + dj, 2K + dk (dj, dk in -1..1), from its face 2 I0.
+      auto row = [&](int dj, int dk) { return fv + lf.local(2 * I0, 2 * J + dj, 2 * K + dk); };
       const PetscScalar *r00 = row(0, 0), *r10 = row(1, 0), *r01 = row(0, 1), *r11 = row(1, 1);
       const PetscScalar *rm0 = row(-1, 0), *rm1 = row(-1, 1), *r0m = row(0, -1), *r1m = row(1, -1);
-      PetscScalar* c = cv + lc.global(gc.start(0), J, K) - 3 * gc.start(0);
-      for (PetscInt I = gc.start(0); I < gc.end(0); ++I) {
+      PetscScalar* c = cv + lc.global(I0, J, K);
+      for (PetscInt I = 0; I < nI; ++I) {
         const PetscInt e = 6 * I, w = e - 3, o = e + 3;  // fine faces 2I (even), 2I - 1, 2I + 1
         // x: full weighting along x over 2I-1, 2I, 2I+1; average over the four (j, k) cells.
         auto xs = [&](const PetscScalar* r) { return 0.25 * r[w] + 0.5 * r[e] + 0.25 * r[o]; };
@@ -156,15 +157,17 @@ void ViscousMultigrid::prolongAdd(size_t fine, Vec coarseLocal, Vec fineLocal) c
   const Layout lf(gf.faceSolveDM()), lc(levels_[fine + 1].grid->faceSolveDM());
   ReadValues cv(coarseLocal);
   WriteValues fv(fineLocal);
+  const PetscInt I0 = gf.start(0) / 2, nI = gf.end(0) / 2 - I0;
   for (PetscInt k = gf.start(2); k < gf.end(2); ++k)
     for (PetscInt j = gf.start(1); j < gf.end(1); ++j) {
       const PetscInt J = j / 2, K = k / 2;
-      // The coarse rows under this fine row; along y (z) an odd fine row lies between two.
-      const PetscScalar* c = cv + lc.local(0, J, K);
-      const PetscScalar* cy = cv + lc.local(0, J + (j % 2), K);
-      const PetscScalar* cz = cv + lc.local(0, J, K + (k % 2));
-      PetscScalar* f = fv + lf.local(0, j, k);
-      for (PetscInt I = gf.start(0) / 2; I < gf.end(0) / 2; ++I) {
+      // The coarse rows under this fine row (from face I0); along y (z) an odd fine row lies
+      // between two.
+      const PetscScalar* c = cv + lc.local(I0, J, K);
+      const PetscScalar* cy = cv + lc.local(I0, J + (j % 2), K);
+      const PetscScalar* cz = cv + lc.local(I0, J, K + (k % 2));
+      PetscScalar* f = fv + lf.local(2 * I0, j, k);
+      for (PetscInt I = 0; I < nI; ++I) {
         const PetscInt e = 6 * I, o = e + 3, C = 3 * I;
         f[e] += c[C];
         f[o] += 0.5 * (c[C] + c[C + 3]);

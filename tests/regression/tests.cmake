@@ -61,6 +61,8 @@ vp_case_run(cavity_fft_x_split 2 --expect kinetic_energy=0.006614501615:1e-8
             -grid_ranks 2,1,1)
 vp_case_run(cavity_assembled_viscous 1 --expect kinetic_energy=0.006614501615:1e-8
             -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -velocity_operator assembled)
+vp_case_run(cavity_multigrid_viscous 2 --expect kinetic_energy=0.006614501615:1e-8
+            -- $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/cavity.opts -grid_n 16,16,16 ${VP_SHORT} -velocity_mg_levels 3)
 
 # --- Particles (DEM) -------------------------------------------------------------------------
 set(VP_DEM_DATA ${CMAKE_CURRENT_SOURCE_DIR}/regression/data)

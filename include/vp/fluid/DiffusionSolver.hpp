@@ -48,10 +48,11 @@ public:
   // y = A x. x global, or local (its owned values set, zero on the fixed wall faces; the ghosts
   // are updated here) when `local` is set, as in the fused CG; then `dot` also returns this rank's
   // part of x.y.
-  double apply(Vec x, Vec y, bool dot, bool local = false) const;
+  double apply(Vec x, Vec y, bool dot, bool local = false);
   // One sweep of A over a local x (owned values set; ghosts refreshed here) with b global: out =
   // b - A x (omega 0), or the damped Jacobi step out = x + omega D^-1 (b - A x); out local, not x.
-  // The fixed wall faces of out are left to the next ghost refresh (it zeroes them). Returns b.out.
+  // The fixed wall faces of out are left to the next ghost refresh (it zeroes them). Returns b.out
+  // for a Jacobi step, 0 for the residual.
   double sweep(Vec x, Vec b, double omega, Vec out) const;
   // The ghosts of a local vector from its owned values: neighbours' values, homogeneous wall rules.
   void refreshGhosts(Vec local) const;
@@ -85,7 +86,8 @@ private:
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
-  // CG + Jacobi on A du = b with PETSc's default convergence test on the unpreconditioned residual.
+  // CG + Jacobi (or the multigrid) on A du = b with PETSc's default convergence test on the
+  // unpreconditioned residual.
   int fusedSolve(Vec b, Vec du, double atol);
 
   const Grid& grid_;

@@ -34,7 +34,8 @@ public:
   // The coarse operators for a = nu dt / 2 and the fine theta (null: none).
   void setOperator(double a, Vec theta);
   // z = M r for a fine r (global layout, zero on the fixed wall faces); z in the fine solver's
-  // local layout (owned values, zero on the fixed faces). Returns this rank's part of r.z.
+  // local layout (owned values; its fixed wall faces hold rounding-size values until a ghost
+  // refresh zeroes them). Returns this rank's part of r.z.
   double apply(Vec r, Vec z);
 
   // The transfers between level `fine` and the next coarser one. restrictTo: fine (local, ghosts
@@ -58,7 +59,8 @@ private:
     Vec x = nullptr, x2 = nullptr, rL = nullptr;      // local: iterate and the next, residual (its ghosts feed the restriction)
     Vec thetaL = nullptr;                             // local theta of a finer level (restricted)
   };
-  // V(b) on level l: into out if given (returns b.out), else into the level's x.
+  // V(b) on level l: into out if given (level 0, never the coarsest; returns b.out), else into the
+  // level's x.
   double cycle(size_t l, Vec out);
 
   std::vector<Level> levels_;
