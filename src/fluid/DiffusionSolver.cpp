@@ -192,8 +192,8 @@ VP_VECTOR_CLONES void DiffusionSolver::stencilRow(PetscInt row, const Weights& w
 
 namespace {
 
-// out = b - y (omega 0: the residual), else out = x + omega dinv (b - y) (a damped Jacobi sweep);
-// returns b.out.
+// out = b - y (omega 0: the residual; returns 0), else out = x + omega dinv (b - y) (a damped
+// Jacobi sweep; returns b.out).
 VP_VECTOR_CLONES double jacobiRow(PetscInt n, double omega, const PetscScalar* __restrict x, const PetscScalar* __restrict y,
                                   const PetscScalar* __restrict b, const PetscScalar* __restrict dinv, PetscScalar* __restrict out)
 {
