@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """What sets the immersed collapse (docs/dam_break.md): the shipped columns measured on their own, and
 the main case's start against the contact stiffness.
-  permeability [--res 6,8,12]: Darcy permeability of cases/data/column_loose.csv and column_dense.csv
+  permeability [--res 4,6,8,12]: Darcy permeability of cases/data/column_loose.csv and column_dense.csv
       at each d/dx: the spheres fixed in a 21 d x 4 d x 18 d box (walls; periodic across the slab), the
       liquid driven across the slab by a uniform body force f (a uniform pressure gradient rho f on the
       mixture), Stokes regime; k = mu U / (rho f) from the superficial velocity U over the column's
@@ -14,11 +14,15 @@ the main case's start against the contact stiffness.
       spheres; 3 s each): the bulk's solid fraction phi against its inertial number
       I = gamma_dot d / sqrt(P / rho_p) from 1.5 s on, extrapolated to I = 0 (GDR MiDi 2004). Table,
       docs/validation/phi_c.png.
+  coupling: the shipped loose column to t = 0.3 s at fluid steps 1e-3, 5e-4 and 2.5e-4 s and implicit
+      drags k 1, 10 and 30 (-dem_implicit_drag; the DEM sub-step kept at 6.7e-6 s; ten runs), the
+      smallest step with k 3 and 30 as the reference: the front and the base excess pore pressure. Table,
+      docs/validation/dam_break_coupling.png.
   stiffness: the loose column prepared and collapsed (cases/dam_break.opts to t = 0.3 s, d/dx 6) with
       contact times t_c 5e-4, 2.5e-4 and 1.25e-4 s (normal stiffness 1x, 4x, 16x; DEM sub-step
       min(6.7e-6 s, t_c / 37.5)): the base excess pore pressure's start-up dip and the front. Table,
       docs/validation/dam_break_stiffness.png.
-usage: collapse.py [permeability|phic|stiffness] [--res 6,8,12] [--reuse]"""
+usage: collapse.py [permeability|phic|coupling|stiffness] [--res 4,6,8,12] [--reuse]"""
 import glob, os, subprocess, sys
 import numpy as np
 import h5py
@@ -27,10 +31,10 @@ from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
 
 column_phi = SourceFileLoader("column_phi", os.path.join(root, "scripts", "column_phi")).load_module()
 
-STUDIES = ("permeability", "phic", "stiffness")
+STUDIES = ("permeability", "phic", "coupling", "stiffness")
 what = chosen_study(__doc__, STUDIES, valued=("--res",))
 reuse = "--reuse" in sys.argv
-res_list = [int(r) for r in sys.argv[sys.argv.index("--res") + 1].split(",")] if "--res" in sys.argv else [6, 8, 12]
+res_list = [int(r) for r in sys.argv[sys.argv.index("--res") + 1].split(",")] if "--res" in sys.argv else [4, 6, 8, 12]
 
 D = 1e-3            # sphere diameter of the columns (m)
 MU, RHO = 0.1, 1000.0
@@ -273,6 +277,50 @@ def front(out):
     return data["time"], (data["front"] - data["front"][0]) / data["front"][0]
 
 
+def pressure_means(t, p, at):
+    """10-ms means of the base excess pressure ending at each time in at."""
+    return [p[(t > a - 0.01) & (t <= a + 1e-9)].mean() for a in at]
+
+
+def coupling():
+    """The shipped loose column to 0.3 s over the fluid step and the implicit drag; the DEM sub-step kept."""
+    sub = 1e-3 / 150
+    grid = [(1e-3, 1), (1e-3, 10), (1e-3, 30), (5e-4, 10), (5e-4, 30), (2.5e-4, 1), (2.5e-4, 10), (2.5e-4, 30),
+            (1.25e-4, 3), (1.25e-4, 30)]
+    runs = []
+    for dt, k in grid:
+        out = os.path.join(scratch, "vp_val_collapse_dt%g_k%g" % (dt, k))
+        if not (reuse and os.path.exists(os.path.join(out, "probes.csv"))):
+            subprocess.run(["mpirun", "-n", ranks, vpsolve, "-options_file", "cases/dam_break.opts", "-time_dt_max", str(dt),
+                            "-dem_substeps", str(round(dt / sub)), "-dem_implicit_drag", str(k), "-time_final", "0.3",
+                            "-output_dt", "0", "-monitor_every", "0", "-output_dir", out, "-output_overwrite"],
+                           check=True, stdout=subprocess.DEVNULL, cwd=root)
+        runs.append((dt, k, out))
+    at = (0.05, 0.1, 0.2, 0.3)
+    print("| fluid step (s) | k | front at 0.05 / 0.1 / 0.2 / 0.3 s | base excess pressure, 10-ms means at "
+          "0.02 / 0.05 / 0.1 / 0.2 / 0.3 s (Pa) | mean over 0-0.1 / 0.1-0.3 s |")
+    print("|---|---|---|---|---|")
+    fig, ax = plt.subplots(2, 1, figsize=(7, 6.5), sharex=True)
+    for dt, k, out in runs:
+        t, p = base_pressure(out)
+        tf, xf = front(out)
+        print("| %g | %g | %s | %s | %+.1f / %+.1f |" % (
+            dt, k, " / ".join("%.3f" % np.interp(a, tf, xf) for a in at),
+            " / ".join("%+.1f" % v for v in pressure_means(t, p, (0.02,) + at)), p[t <= 0.1].mean(), p[t > 0.1].mean()))
+        style = dict(color="C%d" % (1, 10, 30, 3).index(k), ls={1e-3: ":", 5e-4: "--", 2.5e-4: "-", 1.25e-4: "-"}[dt],
+                     lw=2.5 if dt == 1.25e-4 else 1, label="dt %g s, k %g" % (dt, k))
+        ax[0].plot(tf, xf, **style)
+        tm = np.arange(0.01, t[-1] + 1e-9, 0.01)
+        ax[1].plot(tm, pressure_means(t, p, tm), **style)
+    ax[0].set_ylabel("front (x_f - L0) / L0")
+    ax[0].legend(fontsize=7, ncol=2)
+    ax[1].axhline(0, color="k", lw=0.5)
+    ax[1].set_ylabel("base excess pressure, 10-ms means (Pa)")
+    ax[1].set_xlabel("t (s)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "dam_break_coupling.png"), dpi=120)
+
+
 def stiffness():
     runs = []
     for tc in (5e-4, 2.5e-4, 1.25e-4):
@@ -294,7 +342,7 @@ def stiffness():
     for m in runs:
         t, p = base_pressure(m["out"])
         tf, xf = front(m["out"])
-        means = [p[(t > a - 0.01) & (t <= a + 1e-9)].mean() for a in (0.05, 0.1, 0.2, 0.3)]
+        means = pressure_means(t, p, (0.05, 0.1, 0.2, 0.3))
         print("| %g | %d | %.4f | %.1f | %s | %+.1f | %s |" % (
             m["tc"], m["substeps"], m["overlap"], p[t <= 0.03].min(), " / ".join("%+.1f" % v for v in means),
             p.mean(), " / ".join("%.3f" % np.interp(a, tf, xf) for a in (0.1, 0.2, 0.3))))
@@ -313,5 +361,7 @@ if what in ("permeability", "all"):
     permeability()
 if what in ("phic", "all"):
     phic()
+if what in ("coupling", "all"):
+    coupling()
 if what in ("stiffness", "all"):
     stiffness()
