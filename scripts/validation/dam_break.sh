@@ -4,17 +4,17 @@
 # 0.5 s: -collapse_rest_speed) or time T (default 30 s; at d/dx 6 the dense column rested at 14.9 s),
 # then scripts/plot_dam_break into docs/validation; with NP=1 the two columns run side by side.
 # `grid` instead of N: the grid check, the loose column at d/dx 8 and 12 to rest, figures
-# docs/validation/dam_break_grid_8_12_*.png and the runouts compared. Checkpoints every 250 steps; run again, the script continues each column from its latest
-# checkpoint (a run cut short by a job's time limit loses at most 250 steps) and skips a column that
-# came to rest (marked DIR/at_rest); the console goes to DIR.log as well; delete
-# output/validate_dam_break_* to start afresh.
+# docs/validation/dam_break_grid_8_12_*.png and the runouts compared. Checkpoints every 250 steps;
+# run again, the script continues each column from its latest checkpoint (a run cut short by a job's
+# time limit loses at most 250 steps) and skips a column that came to rest (marked DIR/at_rest); the
+# console goes to DIR.log as well; delete output/validate_dam_break_* to start afresh.
 # usage (through scripts/validate): scripts/validate dam_break [N|grid [T]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
 # second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; d/dx 4 on
 # one rank, the two columns side by side (NP=1), 0.4-0.5 s (7-8 minutes).
 set -euo pipefail
 case ${1:-8} in
-  -h|--help) sed -n "2,13s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  -h|--help) sed -n "2,15s/^# \{0,1\}//p" "$0"; exit 0 ;;
   grid|[1-9]|[1-9][0-9]) ;;
   *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
 esac
@@ -48,7 +48,9 @@ else
   n=${1:-8}
   # One rank each: the two columns side by side (each column's console in its log only).
   if [ "$NP" = 1 ]; then
-    column loose "$n" >/dev/null & column dense "$n" >/dev/null & wait
+    column loose "$n" >/dev/null & loose=$!
+    column dense "$n" >/dev/null & dense=$!
+    wait "$loose"; wait "$dense"  # a column that fails stops the script
     labels=("loose_d$n=output/validate_dam_break_loose_d$n" "dense_d$n=output/validate_dam_break_dense_d$n")
   else
     column loose "$n"
