@@ -9,7 +9,10 @@ cases/shear_suspension.opts with changes.
   dilute: phi 0.05 and 0.10 to a strain of 2 against 1 + 2.5 phi + 5.2 phi^2 (Batchelor & Green).
   fraction [--strain S]: phi 0.2, 0.3, 0.4, 0.5 with friction 0.5 and phi 0.4 without, to strain S
       (5): eta_r against Boyer, Guazzelli & Pouliquen 2011 and Krieger-Dougherty (phi_m 0.585), its
-      parts, N1 and N2. Table, docs/validation/rheology_phi.png.
+      parts, N1 and N2, and the core's own viscosity at the core's solid fraction (eta_r_bulk /
+      core_rate at phi_core). Table, docs/validation/rheology_phi.png.
+  gap [--strain S]: phi 0.5, friction 0.5 to strain S (20) in the 16 d gap (the fraction study's run,
+      shared with --reuse) and in a 24 d gap at the same shear rate: the walls' rate and the core's.
   sensitivity [--strain S]: the shipped case (phi 0.4, friction 0.5) to strain S (3) at d/dx 6 and
       8, with half the roughness, and in a periodic cell of 12 d x 12 d instead of 8 d x 8 d. Table.
   thickening [--strain S]: cases/shear_thickening.opts (bidisperse, the critical load model) at
@@ -17,7 +20,7 @@ cases/shear_suspension.opts with changes.
       a the small radius) from frictionless to always frictional, and the DEM's cost per strain unit
       with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
-usage: rheology.py [sphere|dilute|fraction|sensitivity|thickening] [--strain S] [--reuse]"""
+usage: rheology.py [sphere|dilute|fraction|gap|sensitivity|thickening] [--strain S] [--reuse]"""
 import csv, json, os, subprocess, sys
 import numpy as np
 from importlib.machinery import SourceFileLoader
@@ -28,7 +31,7 @@ sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "reg
 plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
 boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
-STUDIES = ("sphere", "dilute", "fraction", "sensitivity", "thickening")
+STUDIES = ("sphere", "dilute", "fraction", "gap", "sensitivity", "thickening")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
 reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
@@ -96,8 +99,8 @@ def block_error(d, block=0.25):
     return np.std(means, ddof=1) / np.sqrt(len(means))
 
 
-def packed(phi, friction, strain_end, name, extra=(), width=0.008):
-    return run(name, ["-particles_packed", f"0,0,0,{width},{width},0.016,{phi},5e-4,1", "-contact_friction", str(friction),
+def packed(phi, friction, strain_end, name, extra=(), width=0.008, gap=0.016):
+    return run(name, ["-particles_packed", f"0,0,0,{width},{width},{gap},{phi},5e-4,1", "-contact_friction", str(friction),
                       "-time_final", str(strain_end / GAMMA)] + list(extra))
 
 
@@ -112,15 +115,18 @@ def dilute():
 def fraction():
     strain_end = strain or 5.0
     runs = [(phi, 0.5) for phi in (0.2, 0.3, 0.4, 0.5)] + [(0.4, 0.0)]
-    print("phi   friction  eta_r  bulk   hydro  lub   contact  n1     n2     core_rate  /Boyer  /KD")
+    print("phi   friction  eta_r  bulk   hydro  lub   contact  n1     n2     core_rate  /Boyer  /KD   "
+          "phi_core  eta_core  /Boyer(phi_core)  /KD(phi_core)")
     points = []
     for phi, mu_c in runs:
         _, d = packed(phi, mu_c, strain_end, f"phi_{phi}_{mu_c}")
         m = second_half(d)
         points.append((phi, mu_c, m))
+        phi_core, eta_core = plot.core(m)
         print(f"{m['phi']:.3f}  {mu_c:8.1f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['eta_hydro']:5.2f}  {m['eta_lub']:4.2f}  "
               f"{m['eta_contact']:7.2f}  {m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  {m['eta_r'] / boyer(m['phi']):6.2f}  "
-              f"{m['eta_r'] / krieger_dougherty(m['phi']):4.2f}")
+              f"{m['eta_r'] / krieger_dougherty(m['phi']):4.2f}  {phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}  "
+              f"{eta_core / krieger_dougherty(phi_core):13.2f}")
     fig, ax = plt.subplots(figsize=(6, 4.5))
     p = np.linspace(0.01, 0.55, 200)
     ax.semilogy(p, boyer(p), "k-", label="Boyer et al. 2011")
@@ -130,7 +136,8 @@ def fraction():
         c = "C0" if mu_c > 0 else "C3"
         ax.plot(m["phi"], m["eta_r"], "o", color=c)
         ax.plot(m["phi"], m["eta_r_bulk"], "x", color=c)
-    ax.plot([], [], "o", color="C0", label="friction 0.5 (o wall, x bulk)")
+        ax.plot(*plot.core(m), "s", mfc="none", color=c)
+    ax.plot([], [], "o", color="C0", label="friction 0.5 (o wall, x bulk, square: the core's own at its phi)")
     ax.plot([], [], "o", color="C3", label="frictionless")
     save(fig, ax, "solid fraction phi", "relative viscosity", f"d/dx 6, gap 16 d, strain {strain_end:g}", "rheology_phi.png")
 
@@ -146,6 +153,21 @@ def sensitivity():
         m = second_half(d)
         print(f"{label:22s} {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['eta_hydro']:5.2f}  {m['eta_lub']:4.2f}  {m['eta_contact']:7.2f}  "
               f"{m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  {m['eta_r'] / boyer(m['phi']):6.2f}", flush=True)
+
+
+def gap():
+    """phi 0.5, friction 0.5 in gaps of 16 d (the fraction study's run) and 24 d at the same shear rate."""
+    strain_end = strain or 20.0
+    print("gap (d)  phi    eta_r  bulk   core_rate  /Boyer  phi_core  eta_core  /Boyer(phi_core)")
+    for width in (16, 24):
+        L = width * 2 * A
+        extra = [] if width == 16 else ["-grid_hi", f"0.008,0.008,{L}", "-grid_n", f"48,48,{6 * width}",
+                                        "-bc_zlo_velocity", f"{-GAMMA * L / 2},0,0", "-bc_zhi_velocity", f"{GAMMA * L / 2},0,0"]
+        _, d = packed(0.5, 0.5, strain_end, "phi_0.5_0.5" if width == 16 else f"gap_{width}", extra, gap=L)
+        m = second_half(d)
+        phi_core, eta_core = plot.core(m)
+        print(f"{width:7d}  {m['phi']:.3f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['core_rate']:9.3f}  "
+              f"{m['eta_r'] / boyer(m['phi']):6.2f}  {phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}", flush=True)
 
 
 THICKENING = os.path.join(root, "cases", "shear_thickening.opts")

@@ -94,7 +94,7 @@ RheologyMonitor::RheologyMonitor(const Grid& grid, const Config& c, const Rheolo
   phi_ = volume / ((grid.hi(0) - grid.lo(0)) * (grid.hi(1) - grid.lo(1)) * (grid.hi(2) - grid.lo(2)));
   csv_ = std::make_unique<CsvWriter>(comm, dir + "/rheology.csv",
                                      std::vector<std::string>{"time", "strain", "phi", "eta_r", "eta_r_bulk", "n1", "n2", "eta_hydro",
-                                                              "eta_lub", "eta_contact", "eta_r_bottom", "eta_r_top", "core_rate"},
+                                                              "eta_lub", "eta_contact", "eta_r_bottom", "eta_r_top", "core_rate", "phi_core"},
                                      resumeAfter);
 }
 
@@ -136,6 +136,13 @@ void RheologyMonitor::record(const RunView& run)
   // The core from the centre of cell kA to that of kB.
   const double thickness = (kB_ - kA_) * h, volume = area * thickness;
   const double rate = (mean(kB_) - mean(kA_)) / thickness;
+  // The core's own solid fraction (the layers at the walls order the spheres at other fractions).
+  const double zA = g.cellCentre(2, kA_), zB = g.cellCentre(2, kB_);
+  const ParticleStore& s = dem_.particles();
+  double solid = 0;
+  for (std::size_t i = 0; i < s.nOwned; ++i)
+    solid += s.shape(i).volumeBetween(toBody(s.q[i], Vec3{0, 0, 1}), zA - s.x[i].z, zB - s.x[i].z);
+  MPI_Allreduce(MPI_IN_PLACE, &solid, 1, MPI_DOUBLE, MPI_SUM, comm);
   const double reynolds = -c_.fluid.rho * sums[nz] * g.cellVolume() / volume;
   SymTensor stresslets = pen_.takeStresslets();
   MPI_Allreduce(MPI_IN_PLACE, stresslets.data(), 6, MPI_DOUBLE, MPI_SUM, comm);
@@ -148,7 +155,7 @@ void RheologyMonitor::record(const RunView& run)
   const double contact = -pairs.pairs[PairStress::Contact][xz] / volume / scale;
   csv_->row({run.time, gamma_ * run.time, phi_, 0.5 * (bottom + top) / scale, hydro + lub + contact,
              (particle[xx] - particle[zz]) / scale, (particle[zz] - particle[yy]) / scale, hydro, lub, contact, bottom / scale,
-             top / scale, rate / gamma_});
+             top / scale, rate / gamma_, solid / volume});
 }
 
 } // namespace vp

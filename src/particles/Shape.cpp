@@ -128,6 +128,15 @@ double Shape::extent(const Vec3& n) const
   return std::sqrt(a * a * (n.x * n.x + n.y * n.y) + cp * cp * n.z * n.z);
 }
 
+double Shape::volumeBetween(const Vec3& n, double lo, double hi) const
+{
+  const double e = extent(n), t0 = std::max(lo, -e), t1 = std::min(hi, e);
+  if (t1 <= t0) return 0;
+  // The section area A0 (1 - t^2 / e^2) integrates to the volume with A0 = 3 V / (4 e).
+  auto primitive = [e](double t) { return t - t * t * t / (3 * e * e); };
+  return 0.75 * volume() / e * (primitive(t1) - primitive(t0));
+}
+
 Vec3 Shape::pointWithNormal(const Vec3& n) const
 {
   const double cp = c(), e = extent(n);

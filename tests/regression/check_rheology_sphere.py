@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """One torque-free sphere in the shear cell (-rheology_monitor; docs/rheology.md): it spins at gamma/2,
 its stresslet (the first moment of its penalization force) is (10/3) pi mu a^3 gamma within the
-box's effect, and the wall traction equals the core's bulk stress (the momentum balance).
+box's effect, the wall traction equals the core's bulk stress (the momentum balance), and the core's
+solid fraction is the sphere's volume over the core's (the sphere lies inside it).
 usage: check_rheology_sphere.py VPSOLVE OUTDIR [NPROC]
 (scripts/validation/rheology.py runs measure() at other resolutions and cell sizes.)"""
 import csv, math, os, shutil, subprocess, sys
@@ -37,6 +38,11 @@ def measure(vpsolve, out, nproc, box=6, res=8, reuse=False):
 
 if __name__ == "__main__":
     spin, ratio, balance = measure(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else 2)
-    print(f"spin / (gamma/2) {spin:.4f}; stresslet / ((10/3) pi mu a^3 gamma) {ratio:.4f}; bulk / wall - 1 {balance:.1e}")
+    L, n = 6 * 2 * A, 6 * 8  # measure()'s default cell
+    phi_core = float(list(csv.DictReader(open(os.path.join(sys.argv[2], "rheology.csv"))))[-1]["phi_core"])
+    phi_sphere = 4 / 3 * math.pi * A**3 / (L * L * (L - L / n))
+    print(f"spin / (gamma/2) {spin:.4f}; stresslet / ((10/3) pi mu a^3 gamma) {ratio:.4f}; bulk / wall - 1 {balance:.1e}; "
+          f"phi_core {phi_core:.6e} (the sphere's {phi_sphere:.6e})")
     # The walls, 2.5 d from the sphere's surface, raise the stresslet by a few per cent (docs/rheology.md).
-    sys.exit(0 if abs(spin - 1) < 0.03 and 1.0 <= ratio <= 1.08 and abs(balance) < 1e-3 else 1)
+    sys.exit(0 if abs(spin - 1) < 0.03 and 1.0 <= ratio <= 1.08 and abs(balance) < 1e-3
+             and abs(phi_core / phi_sphere - 1) < 1e-9 else 1)

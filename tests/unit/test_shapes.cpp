@@ -50,6 +50,35 @@ TEST_CASE("Shape: volume and inertia of a spheroid by quadrature of its inside t
   }
 }
 
+TEST_CASE("Shape: the volume between two planes against quadrature of the inside test, tilted bodies", "[shape]")
+{
+  // The space z planes cut a body whose axis is tilted by 0.6 rad: the slab's volume from the body
+  // frame's normal against a midpoint sum over the points inside and between the planes.
+  const Quaternion q = alignedWith(Vec3{std::sin(0.6), 0, std::cos(0.6)});
+  const Vec3 nz = toBody(q, Vec3{0, 0, 1});
+  for (double aspect : {1.0, 0.5, 2.0}) {
+    const Shape g{1.0, aspect};
+    const double L = g.boundingRadius();
+    const int n = 100;
+    const double slabs[][2] = {{-5, 5}, {-0.3, 0.4}, {0.5, 5}, {-5, -0.8}, {2.5, 3}};
+    for (const auto& s : slabs) {
+      // Midpoints over the bounding cube cut to the slab: the planes are cell faces.
+      const double z0 = std::max(s[0], -L), z1 = std::min(s[1], L), hz = std::max(z1 - z0, 0.0) / n;
+      double V = 0;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+          for (int k = 0; k < n; ++k) {
+            const Vec3 x{L * (2 * (i + 0.5) / n - 1), L * (2 * (j + 0.5) / n - 1), z0 + (k + 0.5) * hz};
+            if (g.distance(toBody(q, x)) < 0) V += 4 * L * L * hz / (double(n) * n);
+          }
+      INFO("aspect " << aspect << ", planes at " << s[0] << " and " << s[1]);
+      CHECK(g.volumeBetween(nz, s[0], s[1]) == Approx(V).margin(1e-3 * g.volume()));
+    }
+    CHECK(g.volumeBetween(nz, -5, 5) == Approx(g.volume()).epsilon(1e-14));
+    CHECK(g.volumeBetween(nz, -5, 0) == Approx(0.5 * g.volume()).epsilon(1e-14));
+  }
+}
+
 TEST_CASE("Shape: the signed distance equals the nearest of many surface points, inside and outside", "[shape]")
 {
   std::mt19937_64 rng(7);

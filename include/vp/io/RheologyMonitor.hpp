@@ -13,6 +13,7 @@
 //   eta_lub, eta_contact  the pair stresses -(1/V) sum r_ij F_ij (midpoints in the core)
 //   n1, n2      (S_xx - S_zz) and (S_zz - S_yy) of the core's particle stress (stresslets and pairs)
 //   core_rate   the core's mean shear rate over gamma (below 1: the walls' layers shear more)
+//   phi_core    the solid fraction of the core (the parts of the particles between its planes)
 // The pair sums are means over the DEM sub-steps since the last row, the stresslets over the fluid
 // steps, the fluid terms the present field.
 #include "vp/core/Config.hpp"

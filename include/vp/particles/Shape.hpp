@@ -39,6 +39,10 @@ struct Shape {
   // along n is the extent (the half-width of the particle across n).
   Vec3 pointWithNormal(const Vec3& n) const;
   double extent(const Vec3& n) const;
+  // The part of the volume between two planes normal to the unit n (body frame) at signed distances
+  // lo < hi from the centre: an ellipsoid's sections parallel to a plane are similar ellipses whose
+  // area falls as 1 - (t / e)^2 with the distance t (e the extent along n).
+  double volumeBetween(const Vec3& n, double lo, double hi) const;
   // Curvature tensor (shape operator) at the surface point p: its two non-zero eigenvalues are the
   // principal curvatures, in the tangent plane; n (x) n is its null space.
   Tensor3 curvature(const Vec3& p) const;
