@@ -12,7 +12,10 @@ cases/shear_suspension.opts with changes.
       parts, N1 and N2, and the core's own viscosity at the core's solid fraction (eta_r_bulk /
       core_rate at phi_core). Table, docs/validation/rheology_phi.png.
   gap [--strain S]: phi 0.5, friction 0.5 to strain S (20) in the 16 d gap (the fraction study's run,
-      shared with --reuse) and in a 24 d gap at the same shear rate: the walls' rate and the core's.
+      shared with --reuse) and in a 24 d gap at the same shear rate: the walls' rate and the core's;
+      the velocity and solid fraction across the gap (the last snapshot), docs/validation/rheology_gap.png.
+  packings [--strain S]: phi 0.4 and 0.5, friction 0.5, three random packings (seeds 1-3; seed 1 the
+      fraction study's run, shared with --reuse) to strain S (20): the spread between packings.
   sensitivity [--strain S]: the shipped case (phi 0.4, friction 0.5) to strain S (3) at d/dx 6 and
       8, with half the roughness, and in a periodic cell of 12 d x 12 d instead of 8 d x 8 d. Table.
   thickening [--strain S]: cases/shear_thickening.opts (bidisperse, the critical load model) at
@@ -20,7 +23,7 @@ cases/shear_suspension.opts with changes.
       a the small radius) from frictionless to always frictional, and the DEM's cost per strain unit
       with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
-usage: rheology.py [sphere|dilute|fraction|gap|sensitivity|thickening] [--strain S] [--reuse]"""
+usage: rheology.py [sphere|dilute|fraction|gap|packings|sensitivity|thickening] [--strain S] [--reuse]"""
 import csv, json, os, subprocess, sys
 import numpy as np
 from importlib.machinery import SourceFileLoader
@@ -31,7 +34,7 @@ sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "reg
 plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
 boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
-STUDIES = ("sphere", "dilute", "fraction", "gap", "sensitivity", "thickening")
+STUDIES = ("sphere", "dilute", "fraction", "gap", "packings", "sensitivity", "thickening")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
 reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
@@ -99,8 +102,8 @@ def block_error(d, block=0.25):
     return np.std(means, ddof=1) / np.sqrt(len(means))
 
 
-def packed(phi, friction, strain_end, name, extra=(), width=0.008, gap=0.016):
-    return run(name, ["-particles_packed", f"0,0,0,{width},{width},{gap},{phi},5e-4,1", "-contact_friction", str(friction),
+def packed(phi, friction, strain_end, name, extra=(), width=0.008, gap=0.016, seed=1):
+    return run(name, ["-particles_packed", f"0,0,0,{width},{width},{gap},{phi},5e-4,{seed}", "-contact_friction", str(friction),
                       "-time_final", str(strain_end / GAMMA)] + list(extra))
 
 
@@ -155,19 +158,73 @@ def sensitivity():
               f"{m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  {m['eta_r'] / boyer(m['phi']):6.2f}", flush=True)
 
 
+def profiles(out):
+    """The last snapshot's plane means across the gap: z (from the gap's middle), u_x and the solid
+    fraction of each cell layer (the spheres' slices between its planes)."""
+    import glob, h5py
+    last = lambda pattern: sorted(glob.glob(os.path.join(out, pattern)))[-1]
+    with h5py.File(last("fields_*.h5")) as f:
+        ux = f["velocity"][..., 0].mean(axis=(1, 2))
+    with h5py.File(last("particles_*.h5")) as f:
+        zc, a = f["position"][:, 2], f["radius"][:]
+    hi = [float(x) for x in json.load(open(os.path.join(out, "run.json")))["options"]["-grid_hi"]["value"].split(",")]
+    L, area = hi[2], hi[0] * hi[1]
+    planes = np.linspace(0, L, len(ux) + 1)
+    def slab(lo, hi):  # the spheres' volume between two planes z = lo, hi
+        t0, t1 = np.clip(lo - zc, -a, a), np.clip(hi - zc, -a, a)
+        return np.pi * np.sum(a * a * (t1 - t0) - (t1**3 - t0**3) / 3)
+    phi = np.array([slab(planes[k], planes[k + 1]) for k in range(len(ux))]) / (area * (planes[1] - planes[0]))
+    return 0.5 * (planes[1:] + planes[:-1]) - L / 2, ux, phi
+
+
 def gap():
     """phi 0.5, friction 0.5 in gaps of 16 d (the fraction study's run) and 24 d at the same shear rate."""
     strain_end = strain or 20.0
     print("gap (d)  phi    eta_r  bulk   core_rate  /Boyer  phi_core  eta_core  /Boyer(phi_core)")
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4.5), sharey=True)
     for width in (16, 24):
         L = width * 2 * A
         extra = [] if width == 16 else ["-grid_hi", f"0.008,0.008,{L}", "-grid_n", f"48,48,{6 * width}",
                                         "-bc_zlo_velocity", f"{-GAMMA * L / 2},0,0", "-bc_zhi_velocity", f"{GAMMA * L / 2},0,0"]
-        _, d = packed(0.5, 0.5, strain_end, "phi_0.5_0.5" if width == 16 else f"gap_{width}", extra, gap=L)
+        out, d = packed(0.5, 0.5, strain_end, "phi_0.5_0.5" if width == 16 else f"gap_{width}", extra, gap=L)
         m = second_half(d)
         phi_core, eta_core = plot.core(m)
         print(f"{width:7d}  {m['phi']:.3f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['core_rate']:9.3f}  "
               f"{m['eta_r'] / boyer(m['phi']):6.2f}  {phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}", flush=True)
+        z, ux, phi = profiles(out)
+        c = "C0" if width == 16 else "C1"
+        ax[0].plot(ux / (GAMMA * L / 2), z / (2 * A), color=c, label=f"gap {width} d: core rate {m['core_rate']:.2f}")
+        ax[0].plot([-1, 1], [-width / 2, width / 2], ":", color=c, lw=0.8)
+        ax[1].plot(phi, z / (2 * A), color=c, label=f"gap {width} d: phi_core {phi_core:.3f}")
+        for a_ in ax:
+            for edge in (-1, 1):  # the core's planes
+                a_.axhline(edge * (width / 2 - 2), color=c, lw=0.6, ls="--")
+    ax[0].plot([], [], "k:", lw=0.8, label="the walls' rate")
+    ax[0].plot([], [], "k--", lw=0.6, label="the core (2 d from each wall)")
+    ax[0].set_xlabel("u_x / U_wall (plane mean)")
+    ax[0].set_ylabel("z / d from the middle")
+    ax[1].set_xlabel("solid fraction of the cell layer")
+    for a_ in ax:
+        a_.legend(fontsize=8)
+    fig.suptitle(f"phi 0.5, friction 0.5: the last snapshot (strain {strain_end:g}) across the gap")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "rheology_gap.png"), dpi=110)
+
+
+def packings():
+    """phi 0.4 and 0.5, friction 0.5: three packings (seeds 1-3; seed 1 is the fraction study's run)."""
+    strain_end = strain or 20.0
+    print("phi   seed  eta_r  bulk   n1     n2     core_rate  phi_core  eta_core  /Boyer(phi_core)")
+    for phi in (0.4, 0.5):
+        cores = []
+        for seed in (1, 2, 3):
+            _, d = packed(phi, 0.5, strain_end, f"phi_{phi}_0.5" if seed == 1 else f"phi_{phi}_0.5_seed{seed}", seed=seed)
+            m = second_half(d)
+            phi_core, eta_core = plot.core(m)
+            cores.append(eta_core / boyer(phi_core))
+            print(f"{phi:.1f}  {seed:4d}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  "
+                  f"{phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}", flush=True)
+        print(f"phi {phi}: eta_core / Boyer(phi_core) {np.mean(cores):.2f} +- {np.std(cores, ddof=1):.2f} over the packings")
 
 
 THICKENING = os.path.join(root, "cases", "shear_thickening.opts")
