@@ -453,6 +453,12 @@ vp_bad_input(rheology_narrow_gap 1 "option -rheology_monitor: the shear cell's g
              -particles_packed 0,0,0,0.008,0.008,0.003,0.3,5e-4,1)
 vp_bad_input(rheology_contact_hydro 1 "option -contact_hydro: the rheology monitor needs keep \\(given: limit\\)"
              -options_file ${VP_CASES}/shear_suspension.opts -contact_hydro limit)
+# Fixed particles (rough walls) in the shear cell: the log says what the wall traction leaves out.
+add_test(NAME rheology_fixed_particles_warning COMMAND $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/shear_suspension.opts
+         -particles_fixed -time_max_steps 1 -output_dt 0 -monitor_every 0 -output_overwrite
+         -output_dir ${CMAKE_CURRENT_BINARY_DIR}/rheology_fixed_particles_warning)
+set_tests_properties(rheology_fixed_particles_warning PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PASS_REGULAR_EXPRESSION
+                     "warning: -rheology_monitor: 782 fixed particles; eta_r \\(the wall traction\\) does not count the forces on them")
 vp_bad_input(packed_fraction 1 "option -particles_packed: volume fraction must be in \\(0, 0.6\\]"
              -options_file ${VP_CASES}/shear_suspension.opts -particles_packed 0,0,0,0.008,0.008,0.016,0.7,5e-4,1)
 vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -particles_packed only"
