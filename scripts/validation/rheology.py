@@ -24,7 +24,8 @@ cases/shear_suspension.opts with changes.
       with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
 usage: rheology.py [sphere|dilute|fraction|gap|packings|sensitivity|thickening] [--strain S] [--reuse]"""
-import csv, json, os, subprocess, sys
+import csv, glob, json, os, subprocess, sys
+import h5py
 import numpy as np
 from importlib.machinery import SourceFileLoader
 from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
@@ -161,7 +162,6 @@ def sensitivity():
 def profiles(out):
     """The last snapshot's plane means across the gap: z (from the gap's middle), u_x and the solid
     fraction of each cell layer (the spheres' slices between its planes)."""
-    import glob, h5py
     last = lambda pattern: sorted(glob.glob(os.path.join(out, pattern)))[-1]
     with h5py.File(last("fields_*.h5")) as f:
         ux = f["velocity"][..., 0].mean(axis=(1, 2))
