@@ -14,6 +14,10 @@ cases/shear_suspension.opts with changes.
   gap [--strain S]: phi 0.5, friction 0.5 to strain S (20) in the 16 d gap (the fraction study's run,
       shared with --reuse) and in a 24 d gap at the same shear rate: the walls' rate and the core's;
       the velocity and solid fraction across the gap (the last snapshot), docs/validation/rheology_gap.png.
+  rough [--strain S]: phi 0.4 and 0.5, friction 0.5 to strain S (20) between rough walls (a layer of
+      fixed spheres of the suspension's radius on each wall, -particles_rough_walls; the packing grown
+      between the layers) against the smooth walls of the fraction study (shared with --reuse): the
+      core's rate, fraction and viscosity; profiles across the gap, docs/validation/rheology_rough.png.
   packings [--strain S]: phi 0.4 and 0.5, friction 0.5, three random packings (seeds 1-3; seed 1 the
       fraction study's run, shared with --reuse) to strain S (20): the spread between packings.
   sensitivity [--strain S]: the shipped case (phi 0.4, friction 0.5) to strain S (3) at d/dx 6 and
@@ -23,7 +27,7 @@ cases/shear_suspension.opts with changes.
       a the small radius) from frictionless to always frictional, and the DEM's cost per strain unit
       with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
-usage: rheology.py [sphere|dilute|fraction|gap|packings|sensitivity|thickening] [--strain S] [--reuse]"""
+usage: rheology.py [sphere|dilute|fraction|gap|rough|packings|sensitivity|thickening] [--strain S] [--reuse]"""
 import csv, glob, json, os, subprocess, sys
 import h5py
 import numpy as np
@@ -35,7 +39,7 @@ sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "reg
 plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
 boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
-STUDIES = ("sphere", "dilute", "fraction", "gap", "packings", "sensitivity", "thickening")
+STUDIES = ("sphere", "dilute", "fraction", "gap", "rough", "packings", "sensitivity", "thickening")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
 reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
@@ -177,6 +181,30 @@ def profiles(out):
     return 0.5 * (planes[1:] + planes[:-1]) - L / 2, ux, phi
 
 
+def draw_profiles(ax, out, m, L, label, color):
+    """The run's profiles (profiles()) on the velocity and fraction panels, z in diameters from the
+    middle; the core's planes dashed (2 d from each wall)."""
+    z, ux, phi = profiles(out)
+    phi_core, _ = plot.core(m)
+    ax[0].plot(ux / (GAMMA * L / 2), z / (2 * A), color=color, label=f"{label}: core rate {m['core_rate']:.2f}")
+    ax[1].plot(phi, z / (2 * A), color=color, label=f"{label}: phi_core {phi_core:.3f}")
+    for a_ in ax:
+        for edge in (-1, 1):
+            a_.axhline(edge * (L / (4 * A) - 2), color=color, lw=0.6, ls="--")
+
+
+def finish_profiles(fig, ax, title, name):
+    ax[0].plot([], [], "k--", lw=0.6, label="the core (2 d from each wall)")
+    ax[0].set_xlabel("u_x / U_wall (plane mean)")
+    ax[0].set_ylabel("z / d from the middle")
+    ax[1].set_xlabel("solid fraction of the cell layer")
+    for a_ in ax:
+        a_.legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, name), dpi=110)
+
+
 def gap():
     """phi 0.5, friction 0.5 in gaps of 16 d (the fraction study's run) and 24 d at the same shear rate."""
     strain_end = strain or 20.0
@@ -191,24 +219,35 @@ def gap():
         phi_core, eta_core = plot.core(m)
         print(f"{width:7d}  {m['phi']:.3f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['core_rate']:9.3f}  "
               f"{m['eta_r'] / boyer(m['phi']):6.2f}  {phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}", flush=True)
-        z, ux, phi = profiles(out)
         c = "C0" if width == 16 else "C1"
-        ax[0].plot(ux / (GAMMA * L / 2), z / (2 * A), color=c, label=f"gap {width} d: core rate {m['core_rate']:.2f}")
+        draw_profiles(ax, out, m, L, f"gap {width} d", c)
         ax[0].plot([-1, 1], [-width / 2, width / 2], ":", color=c, lw=0.8)
-        ax[1].plot(phi, z / (2 * A), color=c, label=f"gap {width} d: phi_core {phi_core:.3f}")
-        for a_ in ax:
-            for edge in (-1, 1):  # the core's planes
-                a_.axhline(edge * (width / 2 - 2), color=c, lw=0.6, ls="--")
     ax[0].plot([], [], "k:", lw=0.8, label="the walls' rate")
-    ax[0].plot([], [], "k--", lw=0.6, label="the core (2 d from each wall)")
-    ax[0].set_xlabel("u_x / U_wall (plane mean)")
-    ax[0].set_ylabel("z / d from the middle")
-    ax[1].set_xlabel("solid fraction of the cell layer")
-    for a_ in ax:
-        a_.legend(fontsize=8)
-    fig.suptitle(f"phi 0.5, friction 0.5: the last snapshot (strain {strain_end:g}) across the gap")
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "rheology_gap.png"), dpi=110)
+    finish_profiles(fig, ax, f"phi 0.5, friction 0.5: the last snapshot (strain {strain_end:g}) across the gap", "rheology_gap.png")
+
+
+def rough():
+    """phi 0.4 and 0.5, friction 0.5, between rough walls (a layer of fixed spheres of the suspension's
+    radius on each wall) against the smooth walls of the fraction study."""
+    strain_end = strain or 20.0
+    L = 0.016
+    print("phi   walls   phi(free)  eta_r  bulk   core_rate  phi_core  eta_core  /Boyer(phi_core)  n1     n2")
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4.5), sharey=True)
+    for k, phi in enumerate((0.4, 0.5)):
+        for walls in ("smooth", "rough"):
+            if walls == "smooth":
+                out, d = packed(phi, 0.5, strain_end, f"phi_{phi}_0.5")
+            else:  # the packing grown between the layers' tops
+                out, d = run(f"rough_{phi}", ["-particles_packed", f"0,0,{2 * A},0.008,0.008,{L - 2 * A},{phi},{A},1",
+                                              "-particles_rough_walls", str(A), "-contact_friction", "0.5",
+                                              "-time_final", str(strain_end / GAMMA)])
+            m = second_half(d)
+            phi_core, eta_core = plot.core(m)
+            print(f"{phi:.1f}  {walls:6s}  {m['phi']:9.3f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['core_rate']:9.3f}  "
+                  f"{phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}  {m['n1']:5.2f}  {m['n2']:5.2f}", flush=True)
+            draw_profiles(ax, out, m, L, f"phi {phi}, {walls}", f"C{2 * k + (walls == 'rough')}")
+    finish_profiles(fig, ax, f"friction 0.5, 16 d gap, smooth and rough walls: the last snapshot (strain {strain_end:g})",
+                    "rheology_rough.png")
 
 
 def packings():

@@ -88,17 +88,18 @@ RheologyMonitor::RheologyMonitor(const Grid& grid, const Config& c, const Rheolo
   kB_ = static_cast<PetscInt>(std::floor((grid.hi(2) - grid.lo(2) - cfg.margin * d) / h - 0.5));
   pen.enableStresslets(grid.cellCentre(2, kA_), grid.cellCentre(2, kB_));
   dem.pairStress().enable(grid.cellCentre(2, kA_), grid.cellCentre(2, kB_));
-  double sums[2] = {0, 0};  // volume, fixed particles
+  double sums[2] = {0, 0};  // the free particles' volume, fixed particles in the core
   for (std::size_t i = 0; i < s.nOwned; ++i) {
-    sums[0] += s.shape(i).volume();
-    sums[1] += s.fixed(i);
+    sums[0] += s.fixed(i) ? 0 : s.shape(i).volume();
+    sums[1] += s.fixed(i) && s.x[i].z >= grid.cellCentre(2, kA_) && s.x[i].z <= grid.cellCentre(2, kB_);
   }
   MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, comm);
   const double volume = sums[0];
-  // Rough walls of fixed spheres carry part of the walls' force, which the traction does not sum.
+  // A fixed particle counts as part of the wall on its side: one in the core is an obstacle that
+  // takes force out of the layer whose stress is measured.
   if (sums[1] > 0)
-    PetscPrintf(comm, "vpsolve: warning: -rheology_monitor: %.0f fixed particles; eta_r (the wall traction) does not count "
-                      "the forces on them; the core's columns hold while they lie outside the core\n", sums[1]);
+    PetscPrintf(comm, "vpsolve: warning: -rheology_monitor: %.0f fixed particles lie in the core; its bulk stress no longer "
+                      "balances the wall traction\n", sums[1]);
   phi_ = volume / ((grid.hi(0) - grid.lo(0)) * (grid.hi(1) - grid.lo(1)) * (grid.hi(2) - grid.lo(2)));
   csv_ = std::make_unique<CsvWriter>(comm, dir + "/rheology.csv",
                                      std::vector<std::string>{"time", "strain", "phi", "eta_r", "eta_r_bulk", "n1", "n2", "eta_hydro",
@@ -138,7 +139,16 @@ void RheologyMonitor::record(const RunView& run)
   const double uLo = c_.bc.velocity[kZlo].x, uHi = c_.bc.velocity[kZhi].x;
   // The wall's viscous stress from the no-slip ghost u_g = (8 U - 6 u_0 + u_1) / 3 (grid/Boundary.cpp).
   const PairStress::Mean pairs = dem_.pairStress().take(comm);
-  auto wallForce = [&](int f) { return pairs.walls[PairStress::Contact][f].x + pairs.walls[PairStress::Lubrication][f].x; };
+  // The walls' forces on the particles: contacts and lubrication with the flat wall and with the
+  // fixed particles on its side (a rough wall), less the liquid's force on those fixed particles.
+  const ParticleStore& s = dem_.particles();
+  double liquidOnFixed[6] = {0, 0, 0, 0, 0, 0};
+  for (std::size_t i = 0; i < s.nOwned; ++i)
+    if (s.fixed(i)) liquidOnFixed[dem_.pairStress().wallOf(s.x[i].z)] += s.fhyd[i].x;
+  MPI_Allreduce(MPI_IN_PLACE, liquidOnFixed, 6, MPI_DOUBLE, MPI_SUM, comm);
+  auto wallForce = [&](int f) {
+    return pairs.walls[PairStress::Contact][f].x + pairs.walls[PairStress::Lubrication][f].x - liquidOnFixed[f];
+  };
   const double bottom = mu * (9 * mean(0) - mean(1) - 8 * uLo) / (3 * h) - wallForce(kZlo) / area;
   const double top = mu * (8 * uHi - 9 * mean(nz - 1) + mean(nz - 2)) / (3 * h) + wallForce(kZhi) / area;
   // The core from the centre of cell kA to that of kB.
@@ -146,7 +156,6 @@ void RheologyMonitor::record(const RunView& run)
   const double rate = (mean(kB_) - mean(kA_)) / thickness;
   // The core's own solid fraction (the layers at the walls order the spheres at other fractions).
   const double zA = g.cellCentre(2, kA_), zB = g.cellCentre(2, kB_);
-  const ParticleStore& s = dem_.particles();
   double solid = 0;
   for (std::size_t i = 0; i < s.nOwned; ++i)
     solid += s.shape(i).volumeBetween(toBody(s.q[i], Vec3{0, 0, 1}), zA - s.x[i].z, zB - s.x[i].z);

@@ -253,7 +253,7 @@ void DemSolver::computeForces(double dt)
       const ContactForce f = contactForce(n, reach - r, vc, law, P.spring[k], dt);
       noteOverlap((reach - r) / (2 * amin), s.id[i], s.id[j]);
       force = f.normal + f.tangential;
-      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], d, force);
+      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Contact, s.x[i], d, force, s.fixed(i), s.fixed(j));
       const Vec3 lever = scale * cross(n, f.tangential);
       const Vec3 roll = rollingTorque(n, s.w[i] - s.w[j], law.kn * (reach - r), law.muR, s.radius[i], s.radius[j],
                                       s.invInertia[i] + s.invInertia[j], dt);
@@ -283,7 +283,7 @@ void DemSolver::computeForces(double dt)
         l.forceI -= (c * dot(s.v[j] - s.v[i], st.normal)) * st.normal;
         squeezePairs_.push_back({i, j, -1, c, st.normal, d});
       }
-      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], d, l.forceI);
+      if (stress_.on() && i < s.nOwned) stress_.addPair(PairStress::Lubrication, s.x[i], d, l.forceI, s.fixed(i), s.fixed(j));
       force += l.forceI;
       torqueI += l.torqueI;
       torqueJ += l.torqueJ;
@@ -446,7 +446,8 @@ bool DemSolver::shapedPair(std::size_t k, double dt)
     P.departure[k] = handOff_.pairState(s, i, j, 0, leaving);
   }
   if (stress_.on() && i < s.nOwned && dot(f.forceI, f.forceI) > 0)
-    stress_.addPair(touching ? PairStress::Contact : PairStress::Lubrication, s.x[i], -d, f.forceI);
+    stress_.addPair(touching ? PairStress::Contact : PairStress::Lubrication, s.x[i], -d, f.forceI, s.fixed(i),
+                    s.fixed(j));
   s.force[i] += f.forceI;
   s.torque[i] += f.torqueI;
   s.force[j] -= f.forceI;
@@ -687,7 +688,7 @@ void DemSolver::addSqueezeStress()
     if (p.wall >= 0)
       stress_.addWall(PairStress::Lubrication, p.wall, force);
     else
-      stress_.addPair(PairStress::Lubrication, s.x[p.i], p.d, force);
+      stress_.addPair(PairStress::Lubrication, s.x[p.i], p.d, force, s.fixed(p.i), s.fixed(p.j));
   }
 }
 

@@ -212,6 +212,39 @@ std::vector<ParticleRecord> latticeParticles(const LatticeInput& in, double dens
   return out;
 }
 
+std::vector<ParticleRecord> roughWallParticles(double radius, double density, const Config& c, std::int64_t firstId)
+{
+  const char* opt = "-particles_rough_walls";
+  if (!c.bc.periodic(0) || !c.bc.periodic(1) || c.bc.periodic(2))
+    failOption(opt, "a layer of fixed spheres on each z wall needs walls along z and periodic x and y");
+  int n[2];
+  double spacing[2];
+  for (int d = 0; d < 2; ++d) {
+    const double length = c.grid.hi[d] - c.grid.lo[d];
+    // A clearance of 5 % of the diameter between neighbours: no contacts within the layer.
+    n[d] = static_cast<int>(std::floor(length / (2.1 * radius)));
+    if (n[d] < 1) failOption(opt, std::string("the radius ") + formatNumber(radius) + " m leaves no sphere across the period along " + "xy"[d]);
+    spacing[d] = length / n[d];
+  }
+  std::vector<ParticleRecord> out;
+  for (int side = 0; side < 2; ++side) {
+    const int face = 4 + side;
+    const double z = side == 0 ? c.grid.lo[2] + radius : c.grid.hi[2] - radius;
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        ParticleRecord r;
+        r.id = firstId + static_cast<std::int64_t>(out.size());
+        r.radius = radius;
+        r.density = density;
+        r.x = {c.grid.lo[0] + (i + 0.5) * spacing[0], c.grid.lo[1] + (j + 0.5) * spacing[1], z};
+        r.v = c.bc.type[face] == BcType::Velocity ? c.bc.velocity[face] : Vec3{};
+        r.flags = kFixed;
+        out.push_back(r);
+      }
+  }
+  return out;
+}
+
 std::vector<ParticleRecord> randomParticles(const RandomInput& in, double density)
 {
   const double a = in.radius;
@@ -393,6 +426,13 @@ std::vector<ParticleRecord> initialParticles(const ParticleConfig& pc, const Con
   if (pc.allFixed)
     for (ParticleRecord& r : p) r.flags |= kFixed;
   validateParticles(p, c, pc.maxOverlap, option);
+  if (pc.roughWalls > 0) {
+    std::int64_t next = 0;
+    for (const ParticleRecord& r : p) next = std::max(next, r.id + 1);
+    const std::vector<ParticleRecord> walls = roughWallParticles(pc.roughWalls, pc.density, c, next);
+    p.insert(p.end(), walls.begin(), walls.end());
+    validateParticles(p, c, pc.maxOverlap, "-particles_rough_walls");
+  }
   return p;
 }
 

@@ -24,8 +24,9 @@ void PairList::build(const ParticleStore& s, const CellBuckets& buckets, double 
     const double range = (s.bound[i] + s.bound[j]) * (1 + rough) + lubricationGap + skin;
     const Vec3 d = s.x[i] - s.x[j];
     if (dot(d, d) >= range * range) return;
-    // Two fixed spheres interact only through lubrication of a prescribed motion (resistance studies).
-    if (s.invMass[i] + s.invMass[j] == 0 && norm(s.v[i]) + norm(s.w[i]) + norm(s.v[j]) + norm(s.w[j]) == 0) return;
+    // Two fixed spheres interact only through lubrication of prescribed relative motion (resistance
+    // studies); moving together (a rough wall's), not at all.
+    if (s.invMass[i] + s.invMass[j] == 0 && norm(s.v[i] - s.v[j]) + norm(s.w[i]) + norm(s.w[j]) == 0) return;
     const bool swap = s.id[j] < s.id[i];
     const auto a = static_cast<std::uint32_t>(swap ? j : i), b = static_cast<std::uint32_t>(swap ? i : j);
     c.push_back({s.id[a], s.id[b], a, b});

@@ -9,8 +9,16 @@ SymTensor symmetricProduct(const Vec3& a, const Vec3& b)
           0.5 * (a.y * b.z + a.z * b.y)};
 }
 
-void PairStress::addPair(Kind k, const Vec3& xi, const Vec3& d, const Vec3& force)
+void PairStress::addPair(Kind k, const Vec3& xi, const Vec3& d, const Vec3& force, bool fixedI, bool fixedJ)
 {
+  if (fixedI != fixedJ) {
+    // The wall's force on the free particle.
+    if (fixedI)
+      addWall(k, wallOf(xi.z), -force);
+    else
+      addWall(k, wallOf(xi.z - d.z), force);
+    return;
+  }
   const double mid = xi.z - 0.5 * d.z;
   if (mid < lo_ || mid > hi_) return;
   const SymTensor t = symmetricProduct(d, force);

@@ -78,6 +78,9 @@ ParticleConfig ParticleConfig::read()
                                                       "a prescribed motion (held in place without them)");
     c.allFixed = o.flag("-particles_fixed", false, "Every particle of infinite mass: held in place, or moving at its given "
                                                    "constant velocity (forces still measured)");
+    c.roughWalls = o.real("-particles_rough_walls", 0, "Rough walls (a shear cell's): a square layer of fixed spheres of this "
+                                                      "radius (m) touching each z wall, at least 2.1 radii apart, moving with the "
+                                                      "wall (-bc_z*_velocity); beside the other particles (give them room); 0: none");
     c.radius = o.real("-particle_radius", c.radius, "Radius of the single particle and of generated ones (m)");
     c.density = o.real("-particle_density", c.density, "Density of the single particle and of generated ones (kg/m^3)");
     c.spheroid = o.choice("-particle_shape", {"sphere", "spheroid"}, 0,
@@ -139,6 +142,7 @@ void ParticleConfig::validate() const
   int sources = !file.empty() + lattice.set + random.set + packed.set + single.set;
   if (sources > 1)
     failOption("-particles_file", "give only one of -particles_file, -particles_lattice, -particles_random, -particles_packed, -particle_position");
+  if (!(roughWalls >= 0) || !std::isfinite(roughWalls)) failOption("-particles_rough_walls", "must be >= 0 (m; 0: none), got " + formatNumber(roughWalls));
   positive(radius, "-particle_radius");
   positive(density, "-particle_density");
   if (lattice.set) {

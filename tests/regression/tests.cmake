@@ -453,12 +453,21 @@ vp_bad_input(rheology_narrow_gap 1 "option -rheology_monitor: the shear cell's g
              -particles_packed 0,0,0,0.008,0.008,0.003,0.3,5e-4,1)
 vp_bad_input(rheology_contact_hydro 1 "option -contact_hydro: the rheology monitor needs keep \\(given: limit\\)"
              -options_file ${VP_CASES}/shear_suspension.opts -contact_hydro limit)
-# Fixed particles (rough walls) in the shear cell: the log says what the wall traction leaves out.
+# Fixed particles in the shear cell's core: the log says the bulk stress no longer balances the walls.
 add_test(NAME rheology_fixed_particles_warning COMMAND $<TARGET_FILE:vpsolve> -options_file ${VP_CASES}/shear_suspension.opts
          -particles_fixed -time_max_steps 1 -output_dt 0 -monitor_every 0 -output_overwrite
          -output_dir ${CMAKE_CURRENT_BINARY_DIR}/rheology_fixed_particles_warning)
 set_tests_properties(rheology_fixed_particles_warning PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PASS_REGULAR_EXPRESSION
-                     "warning: -rheology_monitor: 782 fixed particles; eta_r \\(the wall traction\\) does not count the forces on them")
+                     "warning: -rheology_monitor: 607 fixed particles lie in the core; its bulk stress no longer balances")
+# Liquid between rough walls (layers of fixed spheres): the wall traction, counting the liquid's force
+# on the walls' spheres, balances the core's stress; the core shears faster than the nominal rate.
+add_test(NAME rheology_rough_walls COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_rheology_rough_walls.py $<TARGET_FILE:vpsolve>
+         ${CMAKE_CURRENT_BINARY_DIR}/rheology_rough_walls)
+set_tests_properties(rheology_rough_walls PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" PROCESSORS 2)
+vp_bad_input(rough_walls_not_periodic 1 "option -particles_rough_walls: a layer of fixed spheres on each z wall needs walls along z and periodic x and y"
+             -options_file ${VP_DEM_DATA}/box.opts -particles_rough_walls 5e-4)
+vp_bad_input(rough_walls_crowded 1 "option -particles_rough_walls: particles [0-9]+ and [0-9]+ overlap"
+             -options_file ${VP_CASES}/shear_suspension.opts -particles_rough_walls 5e-4)
 vp_bad_input(packed_fraction 1 "option -particles_packed: volume fraction must be in \\(0, 0.6\\]"
              -options_file ${VP_CASES}/shear_suspension.opts -particles_packed 0,0,0,0.008,0.008,0.016,0.7,5e-4,1)
 vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -particles_packed only"

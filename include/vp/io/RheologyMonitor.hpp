@@ -4,7 +4,9 @@
 // different x velocities), periodic along x and y; shear rate gamma = (U_hi - U_lo) / L_z.
 // rheology.csv gets one row per time-series step, every stress over mu gamma:
 //   eta_r       the wall traction: the fluid's viscous stress at the wall plus the walls' contact and
-//               lubrication forces on the particles, per area, the mean of the two walls
+//               lubrication forces on the particles, per area, the mean of the two walls; fixed
+//               particles belong to the wall on their side (a rough wall): the forces of the liquid
+//               and of the free particles on them count
 //   eta_r_bulk  the bulk stress of the core (the slab more than -rheology_margin mean diameters from
 //               either wall) = eta_hydro + eta_lub + eta_contact:
 //   eta_hydro   the fluid's mean viscous stress 2 mu <E_xz> over the core, the particles' stresslets
@@ -59,7 +61,7 @@ private:
   std::unique_ptr<CsvWriter> csv_;
   double gamma_ = 0;            // nominal shear rate [1/s]
   PetscInt kA_ = 0, kB_ = 0;    // the core: from the centre of cell kA to that of cell kB
-  double phi_ = 0;              // solid fraction of the cell
+  double phi_ = 0;              // solid fraction of the free particles in the cell
 };
 
 } // namespace vp

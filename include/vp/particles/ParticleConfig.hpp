@@ -56,6 +56,7 @@ struct ParticleConfig {
   bool randomAxes = false;    // -particle_orientation random: generated spheroids' axes uniform on the sphere
   double maxOverlap = 0.01;   // -particles_max_overlap: largest initial overlap, fraction of the mean diameter
   bool allFixed = false;      // -particles_fixed: every particle held in place (forces still measured)
+  double roughWalls = 0;      // -particles_rough_walls: radius [m] of a layer of fixed spheres on each z wall (0: none)
   ContactConfig contact;
   LubricationParams lubrication; // -lub_*: activation and saturation defaults set by resolveDefaults
   double maskSupport = 0;     // set by the coupling: how far beyond a radius the mask reaches [m]
@@ -67,7 +68,7 @@ struct ParticleConfig {
   bool trackAll = false;      // -track_particles all
   std::vector<std::int64_t> track; // -track_particles id,id,...
 
-  bool any() const { return !file.empty() || lattice.set || random.set || packed.set || single.set; }
+  bool any() const { return !file.empty() || lattice.set || random.set || packed.set || single.set || roughWalls > 0; }
 
   static ParticleConfig read();
   void validate() const;
