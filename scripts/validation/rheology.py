@@ -20,6 +20,9 @@ cases/shear_suspension.opts with changes.
       core's rate, fraction and viscosity; profiles across the gap, docs/validation/rheology_rough.png.
   packings [--strain S]: phi 0.4 and 0.5, friction 0.5, three random packings (seeds 1-3; seed 1 the
       fraction study's run, shared with --reuse) to strain S (20): the spread between packings.
+  normal [--strain S]: N1 and N2 over the core's shear stress against the core's solid fraction, for
+      the fraction, gap, packings and rough runs (made here when missing; shared with --reuse), against
+      the measured fits of Dai et al. 2013. Table, docs/validation/rheology_normal.png.
   sensitivity [--strain S]: the shipped case (phi 0.4, friction 0.5) to strain S (3) at d/dx 6 and
       8, with half the roughness, and in a periodic cell of 12 d x 12 d instead of 8 d x 8 d. Table.
   thickening [--strain S]: cases/shear_thickening.opts (bidisperse, the critical load model) at
@@ -27,7 +30,7 @@ cases/shear_suspension.opts with changes.
       a the small radius) from frictionless to always frictional, and the DEM's cost per strain unit
       with the explicit and the implicit squeeze. Table, docs/validation/rheology_thickening.png.
 Means over the second half of each run's strain.
-usage: rheology.py [sphere|dilute|fraction|gap|rough|packings|sensitivity|thickening] [--strain S] [--reuse]"""
+usage: rheology.py [sphere|dilute|fraction|gap|rough|packings|normal|sensitivity|thickening] [--strain S] [--reuse]"""
 import csv, glob, json, os, subprocess, sys
 import h5py
 import numpy as np
@@ -39,7 +42,7 @@ sphere_check = SourceFileLoader("sphere_check", os.path.join(root, "tests", "reg
 plot = SourceFileLoader("plot_rheology", os.path.join(root, "scripts", "plot_rheology")).load_module()
 boyer, krieger_dougherty = plot.boyer, plot.krieger_dougherty
 
-STUDIES = ("sphere", "dilute", "fraction", "gap", "rough", "packings", "sensitivity", "thickening")
+STUDIES = ("sphere", "dilute", "fraction", "gap", "rough", "packings", "normal", "sensitivity", "thickening")
 what = chosen_study(__doc__, STUDIES, valued=("--strain",))
 reuse = "--reuse" in sys.argv
 strain = float(sys.argv[sys.argv.index("--strain") + 1]) if "--strain" in sys.argv else None
@@ -264,6 +267,56 @@ def packings():
             print(f"{phi:.1f}  {seed:4d}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  "
                   f"{phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}", flush=True)
         print(f"phi {phi}: eta_core / Boyer(phi_core) {np.mean(cores):.2f} +- {np.std(cores, ddof=1):.2f} over the packings")
+
+
+def dai(phi):
+    """N1 / sigma and N2 / sigma measured by Dai, Bertevas, Qi & Tanner 2013 (J. Rheol. 57, 493;
+    "Viscometric functions for noncolloidal sphere suspensions with Newtonian matrices"): -0.8 phi^3
+    and -4.4 phi^3, their fits over 0.1 <= phi <= 0.45."""
+    return -0.8 * phi**3, -4.4 * phi**3
+
+
+def normal():
+    """N1 and N2 over the core's shear stress, against phi_core: the fraction, packings and rough runs
+    (run here when missing) against Dai et al.'s measured fits."""
+    strain_end = strain or 20.0
+    runs = [(f"phi_{phi}_0.5", "friction 0.5", "C0") for phi in (0.2, 0.3, 0.4, 0.5)]
+    runs += [(f"phi_{phi}_0.5_seed{s}", "friction 0.5, other packings", "C2") for phi in (0.4, 0.5) for s in (2, 3)]
+    runs += [("phi_0.4_0.0", "frictionless", "C3"), ("gap_24", "friction 0.5, 24 d gap", "C4")]
+    runs += [(f"rough_{phi}", "friction 0.5, rough walls", "C1") for phi in (0.4, 0.5)]
+    print("run                   phi_core  N1/sigma  N2/sigma  Dai: N1/sigma  N2/sigma")
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    p = np.linspace(0.1, 0.45, 50)
+    for k, style in ((0, "k--"), (1, "k-")):
+        ax.plot(p, dai(p)[k], style)
+        ax.plot(np.linspace(0.45, 0.53, 10), dai(np.linspace(0.45, 0.53, 10))[k], style, lw=0.6)
+    ax.plot([], [], "k-", label="Dai et al. 2013, N2 (fit 0.1-0.45, thin: beyond)")
+    ax.plot([], [], "k--", label="Dai et al. 2013, N1")
+    labelled = set()
+    for name, label, color in runs:
+        if name.startswith("rough_"):
+            phi = float(name.split("_")[1])
+            _, d = run(name, ["-particles_packed", f"0,0,{2 * A},0.008,0.008,{0.016 - 2 * A},{phi},{A},1",
+                              "-particles_rough_walls", str(A), "-contact_friction", "0.5", "-time_final", str(strain_end / GAMMA)])
+        else:
+            parts = name.split("_")
+            L = 0.024 if name == "gap_24" else 0.016
+            extra = ["-grid_hi", f"0.008,0.008,{L}", "-grid_n", "48,48,144", "-bc_zlo_velocity", f"{-GAMMA * L / 2},0,0",
+                     "-bc_zhi_velocity", f"{GAMMA * L / 2},0,0"] if name == "gap_24" else []
+            phi = 0.5 if name == "gap_24" else float(parts[1])
+            seed = int(parts[3][4:]) if len(parts) > 3 else 1
+            _, d = packed(phi, 0.0 if name == "phi_0.4_0.0" else 0.5, strain_end, name, extra, gap=L, seed=seed)
+        m = second_half(d)
+        n1, n2 = m["n1"] / m["eta_r_bulk"], m["n2"] / m["eta_r_bulk"]
+        r1, r2 = dai(m["phi_core"])
+        print(f"{name:20s}  {m['phi_core']:8.3f}  {n1:8.3f}  {n2:8.3f}  {r1:13.3f}  {r2:8.3f}", flush=True)
+        ax.plot(m["phi_core"], n2, "o", color=color, label=None if label in labelled else label)
+        ax.plot(m["phi_core"], n1, "^", mfc="none", color=color)
+        labelled.add(label)
+    ax.plot([], [], "k^", mfc="none", label="N1 (open triangles); N2 (dots)")
+    ax.axhline(0, color="0.6", lw=0.6)
+    save(fig, ax, "the core's solid fraction phi_core", "normal stress difference / shear stress",
+         f"N1, N2 over the core's shear stress, d/dx 6, strain {strain_end:g}", "rheology_normal.png", 7)
 
 
 THICKENING = os.path.join(root, "cases", "shear_thickening.opts")
