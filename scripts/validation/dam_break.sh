@@ -8,17 +8,22 @@
 # run again, the script continues each column from its latest checkpoint (a run cut short by a job's
 # time limit loses at most 250 steps) and skips a column that came to rest (marked DIR/at_rest); the
 # console goes to DIR.log as well; delete output/validate_dam_break_* to start afresh.
-# usage (through scripts/validate): scripts/validate dam_break [N|grid [T]]
+# S (a whole number, default 1): the height study, columns S times as long and as high (about 15 S
+# diameters high, S^2 times the spheres) in a tank S times as long and high, the slab as before;
+# the columns are prepared first when missing (scripts/prepare_columns --scale S, into output/).
+# usage (through scripts/validate): scripts/validate dam_break [N|grid [T [S]]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
 # second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; d/dx 4 on
 # one rank, the two columns side by side (NP=1), 0.4-0.5 s (7-8 minutes).
 set -euo pipefail
 case ${1:-8} in
-  -h|--help) sed -n "2,15s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  -h|--help) sed -n "2,17s/^# \{0,1\}//p" "$0"; exit 0 ;;
   grid|[1-9]|[1-9][0-9]) ;;
   *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
 esac
 t=${2:-30}
+scale=${3:-1}
+[[ $scale =~ ^[1-9]$ ]] || { echo "dam_break: S must be a whole number 1-9, not '$scale'" >&2; exit 2; }
 cd "$VP_ROOT"
 labels=()
 
@@ -26,14 +31,23 @@ labels=()
 column() {
   local kind=$1 n=$2 case_file=cases/dam_break.opts
   [ "$kind" = dense ] && case_file=cases/dam_break_dense.opts
-  local grid="$((64 * n)),$((4 * n)),$((20 * n))" out=output/validate_dam_break_${kind}_d$n
-  labels+=("${kind}_d$n=$out")
+  local grid="$((64 * n * scale)),$((4 * n)),$((20 * n * scale))" out=output/validate_dam_break_${kind}_d$n
+  local tall=()
+  if [ "$scale" != 1 ]; then
+    out=${out}_x$scale
+    [ -e "output/column_${kind}_x$scale.csv" ] || scripts/prepare_columns --scale "$scale" "$kind"
+    local at=(0.0095 0.062 0.019 0.064 0.020)  # the probes' x, x, z and the tank's length and height (m)
+    for i in "${!at[@]}"; do at[$i]=$(awk -v v="${at[$i]}" -v s="$scale" 'BEGIN { print v * s }'); done
+    tall=(-particles_file "output/column_${kind}_x$scale.csv" -grid_hi "${at[3]},0.004,${at[4]}"
+          -probe "${at[0]},0.002,0.00025,${at[1]},0.002,${at[2]}")
+  fi
+  labels+=("${kind}_d$n$([ "$scale" = 1 ] || echo "_x$scale")=$out")
   # A column at rest is done: a restart would begin a new rest window and run on for 0.5 s.
   if [ -e "$out/at_rest" ]; then echo "dam break $kind, d/dx $n: at rest ($(cat "$out/at_rest")); delete $out to run it again"; return; fi
   local start=(-output_overwrite)
   if [ -e "$out/checkpoint_latest.h5" ]; then start=(-restart "$out/checkpoint_latest.h5"); fi
   echo "dam break $kind, d/dx $n ($grid cells), to rest or t = $t s -> $out (${start[*]})"
-  mpirun -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" -time_final "$t" -output_dir "$out" \
+  mpirun -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" "${tall[@]}" -time_final "$t" -output_dir "$out" \
     "${start[@]}" -monitor_every 200 -output_dt 0.1 -checkpoint_every 250 \
     -collapse_rest_speed 1e-4 -collapse_rest_window 0.5 | tee -a "$out.log"
   local stopped
@@ -51,10 +65,11 @@ else
     column loose "$n" >/dev/null & loose=$!
     column dense "$n" >/dev/null & dense=$!
     wait "$loose"; wait "$dense"  # a column that fails stops the script
-    labels=("loose_d$n=output/validate_dam_break_loose_d$n" "dense_d$n=output/validate_dam_break_dense_d$n")
+    tag=$([ "$scale" = 1 ] || echo "_x$scale")
+    labels=("loose_d$n$tag=output/validate_dam_break_loose_d$n$tag" "dense_d$n$tag=output/validate_dam_break_dense_d$n$tag")
   else
     column loose "$n"
     column dense "$n"
   fi
-  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n" "${labels[@]}"
+  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$([ "$scale" = 1 ] || echo "_x$scale")" "${labels[@]}"
 fi
