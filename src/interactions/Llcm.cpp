@@ -3,21 +3,25 @@
 
 namespace vp {
 
-PairForce llcmForce(const PairState& s, double region, bool openEdge)
+PairForce llcmForce(const PairState& s, double region, bool openEdge, LubPart part)
 {
   const Vec3& n = s.normal;
   const double R = s.reducedRadius();
   const double h = s.gap;
   const double mu = s.viscosity;
   const double H0 = h + 0.5 * region * region * R;
-  // x = 1 - h/H0 = r0^2/(2R H0). ln(H0/h) = -log1p(-x) stays accurate when x is small (small
-  // region or large gap); the direct ratio is accurate when x is close to 1 (small gap).
+  // x = 1 - h/H0 = r0^2/(2R H0).
   const double x = 0.5 * region * region * R / H0;
+  PairForce f;
+  if (part != LubPart::Shear) {
+    f = blcmForce(s);
+    f.forceI *= openEdge ? x : x * x;  // squeeze with the inner pressure at r0, or with p(r0) = 0
+  }
+  if (part == LubPart::Squeeze) return f;
+  // ln(H0/h) = -log1p(-x) stays accurate when x is small (small region or large gap); the direct
+  // ratio is accurate when x is close to 1 (small gap).
   const double J1 = x < 0.5 ? -std::log1p(-x) : std::log(H0 / h);
   const double J3 = J1 - x;
-
-  PairForce f = blcmForce(s);
-  f.forceI *= openEdge ? x : x * x;  // squeeze with the inner pressure at r0, or with p(r0) = 0
 
   const double kI = s.curvatureI(), kJ = s.curvatureJ();
   const Vec3 sI = s.tangential(s.surfaceVelocityI());

@@ -59,30 +59,31 @@ void LubricationParams::checkRadius(double rmax) const
   throw InputError(msg.str());
 }
 
-PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch)
+PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch, LubPart part)
 {
   switch (model) {
-  case LubModel::Blcm: return blcmForce(s);
-  case LubModel::Llcm: return llcmForce(s, llcmRegion, patch);
+  case LubModel::Blcm: return part == LubPart::Shear ? PairForce{} : blcmForce(s);  // a squeeze only
+  case LubModel::Llcm: return llcmForce(s, llcmRegion, patch, part);
   default: return {};
   }
 }
 
 namespace {
 
-// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion; a replaced pair: the first term
-// over its patch (r0^2 = 2 R delta: the region R0 = r0 / R).
-PairForce unresolvedPart(const LubricationParams& p, const PairState& s, double hAct, double a, bool replaced)
+// F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion (the state carries that part's
+// velocities only); a replaced pair: the first term over its patch (r0^2 = 2 R delta: the region
+// R0 = r0 / R).
+PairForce unresolvedPart(const LubricationParams& p, const PairState& s, LubPart part, double hAct, double a, bool replaced)
 {
   PairState at = s, act = s;
   at.gap = std::max(s.gap, p.saturation * a);
   act.gap = hAct;
   if (replaced) {
     const double R = s.reducedRadius();
-    return lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true);
+    return lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true, part);
   }
-  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at);
-  f -= lubricationModelForce(p.model, p.llcmRegion, act);
+  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at, false, part);
+  f -= lubricationModelForce(p.model, p.llcmRegion, act, false, part);
   return f;
 }
 
@@ -99,7 +100,7 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
   squeeze.velocityI = dot(s.velocityI, s.normal) * s.normal;
   squeeze.velocityJ = dot(s.velocityJ, s.normal) * s.normal;
   squeeze.angularVelocityI = squeeze.angularVelocityJ = Vec3{};
-  PairForce f = unresolvedPart(p, squeeze, hAct, a, replaced);
+  PairForce f = unresolvedPart(p, squeeze, LubPart::Squeeze, hAct, a, replaced);
   if (s.slipWall) {
     // One shear-free surface: the gap flow is a half Poiseuille profile, four times the flux per
     // pressure gradient, so a quarter of the squeeze pressure; no Couette shear to resist sliding.
@@ -118,7 +119,7 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
     PairState shear = s;
     shear.velocityI = s.tangential(s.velocityI);
     shear.velocityJ = s.tangential(s.velocityJ);
-    f += unresolvedPart(p, shear, hShear, a, false);
+    f += unresolvedPart(p, shear, LubPart::Shear, hShear, a, false);
   }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;

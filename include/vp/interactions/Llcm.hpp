@@ -18,6 +18,7 @@
 
 namespace vp {
 
-PairForce llcmForce(const PairState& s, double region, bool openEdge = false);
+// part: Squeeze the normal force alone, Shear the tangential terms alone (Lubrication.hpp).
+PairForce llcmForce(const PairState& s, double region, bool openEdge = false, LubPart part = LubPart::Both);
 
 } // namespace vp

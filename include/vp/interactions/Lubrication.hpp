@@ -39,6 +39,11 @@ struct PairState {
 };
 
 // j receives -forceI. Torques are about each sphere's centre; a wall takes no torque (zero).
+// Which motions a model force is asked for: the squeeze (normal relative motion: the normal force
+// alone) or the shear (sliding and rolling: the tangential terms alone), or both. A model is linear
+// in the velocities, so a caller that splits the motion evaluates only the part its state carries.
+enum class LubPart { Both, Squeeze, Shear };
+
 struct PairForce {
   Vec3 forceI;
   Vec3 torqueI;

@@ -85,8 +85,9 @@ private:
 };
 
 // Raw model force at the state's gap (no activation or saturation); patch: the LLCM's open-edge
-// squeeze of a replaced gap patch (Llcm.hpp).
-PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch = false);
+// squeeze of a replaced gap patch (Llcm.hpp); part: the motions asked for (Lubrication.hpp).
+PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairState& s, bool patch = false,
+                                LubPart part = LubPart::Both);
 
 // The correction a pair loop adds for a sphere-sphere or sphere-wall pair (defaults resolved).
 // contactGap: the surface gap at which the contact model takes over (roughness). scale: the length
