@@ -7,7 +7,8 @@ cases/shear_suspension.opts with changes.
       (L = 6 d) and at L = 6, 8, 10 d (d/dx 8), extrapolated to an unbounded liquid in (a/L)^3.
       Table, docs/validation/rheology_sphere.png.
   dilute: phi 0.05 and 0.10 to a strain of 2 against 1 + 2.5 phi + 5.2 phi^2 (Batchelor & Green).
-  fraction [--strain S]: phi 0.2, 0.3, 0.4, 0.5 with friction 0.5 and without, to strain S
+  fraction [--strain S]: phi 0.2, 0.3, 0.4, 0.5 with friction 0.5 and without (and 0.5 frictionless
+      bidisperse, radii 1:1.4, against ordering), to strain S
       (5): eta_r against Boyer, Guazzelli & Pouliquen 2011 and Krieger-Dougherty (phi_m 0.585), its
       parts, N1 and N2, and the core's own viscosity at the core's solid fraction (eta_r_bulk /
       core_rate at phi_core). Table, docs/validation/rheology_phi.png.
@@ -125,32 +126,35 @@ def dilute():
 
 def fraction():
     strain_end = strain or 5.0
-    runs = [(phi, mu_c) for mu_c in (0.5, 0.0) for phi in (0.2, 0.3, 0.4, 0.5)]
+    runs = [(phi, mu_c, 1.0) for mu_c in (0.5, 0.0) for phi in (0.2, 0.3, 0.4, 0.5)] + [(0.5, 0.0, 1.4)]
     print("phi   friction  eta_r  bulk   hydro  lub   contact  n1     n2     core_rate  /Boyer  /KD   "
           "phi_core  eta_core  /Boyer(phi_core)  /KD(phi_core; frictionless phi_m 0.64)")
     points = []
-    for phi, mu_c in runs:
-        _, d = packed(phi, mu_c, strain_end, f"phi_{phi}_{mu_c}")
+    for phi, mu_c, ratio in runs:  # ratio 1.4: bidisperse, against ordering of the monodisperse packing
+        name = f"phi_{phi}_{mu_c}" + ("" if ratio == 1 else f"_bi{ratio}")
+        _, d = packed(phi, mu_c, strain_end, name, [] if ratio == 1 else ["-particles_size_ratio", str(ratio)])
         m = second_half(d)
-        points.append((phi, mu_c, m))
+        points.append((mu_c, ratio, m))
         phi_core, eta_core = plot.core(m)
         print(f"{m['phi']:.3f}  {mu_c:8.1f}  {m['eta_r']:5.2f}  {m['eta_r_bulk']:5.2f}  {m['eta_hydro']:5.2f}  {m['eta_lub']:4.2f}  "
               f"{m['eta_contact']:7.2f}  {m['n1']:5.2f}  {m['n2']:5.2f}  {m['core_rate']:9.3f}  {m['eta_r'] / boyer(m['phi']):6.2f}  "
               f"{m['eta_r'] / krieger_dougherty(m['phi']):4.2f}  {phi_core:8.3f}  {eta_core:8.2f}  {eta_core / boyer(phi_core):16.2f}  "
-              f"{eta_core / krieger_dougherty(phi_core, 0.585 if mu_c > 0 else 0.64):13.2f}")
+              f"{eta_core / krieger_dougherty(phi_core, 0.585 if mu_c > 0 else 0.64):13.2f}"
+              + ("" if ratio == 1 else f"  bidisperse 1:{ratio}"), flush=True)
     fig, ax = plt.subplots(figsize=(6, 4.5))
     p = np.linspace(0.01, 0.55, 200)
     ax.semilogy(p, boyer(p), "k-", label="Boyer et al. 2011")
     ax.semilogy(p, krieger_dougherty(p), "k--", label="Krieger-Dougherty, phi_m 0.585")
     ax.semilogy(p, krieger_dougherty(p, 0.64), "--", color="C3", lw=0.8, label="Krieger-Dougherty, phi_m 0.64 (frictionless)")
     ax.semilogy(p, 1 + 2.5 * p + 5.2 * p**2, "k:", label="1 + 2.5 phi + 5.2 phi^2")
-    for phi, mu_c, m in points:
-        c = "C0" if mu_c > 0 else "C3"
+    for mu_c, ratio, m in points:
+        c = "C0" if mu_c > 0 else ("C3" if ratio == 1 else "C1")
         ax.plot(m["phi"], m["eta_r"], "o", color=c)
         ax.plot(m["phi"], m["eta_r_bulk"], "x", color=c)
         ax.plot(*plot.core(m), "s", mfc="none", color=c)
     ax.plot([], [], "o", color="C0", label="friction 0.5 (o wall, x bulk, square: the core's own at its phi)")
     ax.plot([], [], "o", color="C3", label="frictionless")
+    ax.plot([], [], "o", color="C1", label="frictionless, bidisperse 1:1.4")
     save(fig, ax, "solid fraction phi", "relative viscosity", f"d/dx 6, gap 16 d, strain {strain_end:g}", "rheology_phi.png")
 
 
