@@ -6,7 +6,9 @@
   glass_grid:  the light sphere (glass in water) at nominal St 1000 against the grid, d/dx 8 to 24, and the step
   timestep:    e at St 27, 130 and 450 against the fluid step (CFL 0.5 to 1/16), d/dx 8, the case's
                contact (stretched over 10 fluid steps); with --short also a real, short one (50 us)
-  gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref
+  gondret:     Gondret's St 27 (d = 6 mm) and St 152 (d = 3 mm) set-ups: gap/d against t/t_ref with the
+               measured trajectories (scripts/validation/data), released 3 d above the floor and from
+               high enough to arrive at the terminal speed; the first apex against the measured one
   oblique:     dry (Foerster glass, DEM only) and wet (Joseph & Hunt steel and glass in glycerol-water)
                impacts, Psi_2 and Psi_out against Psi_in with the rigid-body lines
   calibration: fixed spheres in Stokes flow at fixed gaps (normal, two spheres at five positions of
@@ -26,9 +28,10 @@
                takes it
   inertia:     e at St 20, 30, 60 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
                gap (-lub_inertia)
-usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|replacement|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--reuse] [--fine]
+usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|replacement|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--width W] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
+  --width W: the Gondret box's width in d (default 6)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
                (figure restitution_roughness.png)
@@ -385,53 +388,93 @@ def timestep():
 
 
 # --- Gondret's set-ups: trajectories ------------------------------------------------------------------
-GONDRET = {  # St: (d, rho_p/rho, nu, u_in); steel rho_p 7800
-    27: (0.006, 8.083, 1.036e-4, 0.518),
-    152: (0.003, 8.342, 1.070e-5, 0.585),
+GONDRET = {  # St: (d, rho_p/rho, nu, u_in, final time after the first contact (s): the experiment's rebounds,
+    #      a release gap (in d) from which the sphere regains most of its terminal speed by 1 d); steel rho_p 7800
+    27: (0.006, 8.083, 1.036e-4, 0.518, 0.06, 15),
+    152: (0.003, 8.342, 1.070e-5, 0.585, 0.18, 15),
 }
+APEX_BAND = 0.25  # the first apex within 25 % of the experiment's
+# Released 3 d above the floor at u_in, the sphere meets liquid at rest: the added mass and the history
+# force take about 13 % (St 27) and 10 % (St 152) of its speed by a gap of 1 d, whatever the box's width
+# (6 or 12 d: 0.4 % apart). Released higher it regains its terminal speed, as the experiments' spheres
+# arrive.
+GONDRET_RELEASES = (3, None)  # None: the set-up's own release gap
+width = int(sys.argv[sys.argv.index("--width") + 1]) if "--width" in sys.argv else 6
 
 
-def gondret_run(st, hydro, r=None, extra=()):
+def gondret_run(st, hydro, r=None, extra=(), release=3):
     r = r or res
-    d, ratio, nu, u = GONDRET[st]
+    d, ratio, nu, u, after, _ = GONDRET[st]
     rho = STEEL / ratio
     h = d / r
     dt = 0.5 * h / u
-    out = os.path.join(scratch, "vp_col_gondret_st%d_%s_r%d" % (st, hydro, r) + "".join(str(x) for x in extra).replace("-", "_"))
-    rows = run(out, "-grid_n", "%d,%d,%d" % (6 * r, 6 * r, 10 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 10 * d),
-               "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", d / 2,
+    tall = max(10, release + 5)
+    out = os.path.join(scratch, "vp_col_gondret_st%d_%s_r%d" % (st, hydro, r) + ("_w%d" % width if width != 6 else "") +
+                       ("_h%d" % release if release != 3 else "") + "".join(str(x) for x in extra).replace("-", "_"))
+    rows = run(out, "-grid_n", "%d,%d,%d" % (width * r, width * r, tall * r), "-grid_hi", "%g,%g,%g" % (width * d, width * d, tall * d),
+               "-particle_position", "%g,%g,%g" % (width / 2 * d, width / 2 * d, (release + 0.5) * d), "-particle_radius", d / 2,
                "-particle_velocity", "0,0,%g" % -u, "-fluid_rho", rho, "-fluid_mu", rho * nu, "-time_dt", dt,
-               "-time_final", 0.1, "-dem_substeps", 200, "-contact_hydro", hydro, *extra)
+               "-time_final", release * d / u + after, "-dem_substeps", 200, "-contact_hydro", hydro, *extra)
     return d, rows
 
 
-def apexes(rows, a):
-    """Heights (gap/d) of the local maxima of the trajectory after the first contact."""
-    d = 2 * a
-    g = [(x["z"] - a) / d for x in rows]
-    first = next((i for i in range(len(g)) if g[i] <= 2e-4), len(g))
-    return [g[i] for i in range(first + 1, len(g) - 1) if g[i - 1] < g[i] >= g[i + 1] and g[i] > 1e-3]
+def gondret_measured(st):
+    """The experiment's trajectory (time from the first contact, gap), scripts/validation/data."""
+    f = os.path.join(root, "scripts", "validation", "data", "gondret2002_st%d.csv" % st)
+    rows = list(csv.DictReader(line for line in open(f) if not line.startswith("#")))
+    return [float(x["time"]) for x in rows], [float(x["gap"]) for x in rows]
+
+
+def measured_rebound(t, g, d):
+    """The rebound speed of a measured trajectory (s, m) where the gap passes GAP_REBOUND d on the way out:
+    the slope of the segment that crosses it (the points lie about 2 ms apart)."""
+    k = next(i for i in range(1, len(t)) if t[i - 1] >= 0 and g[i - 1] < GAP_REBOUND * d <= g[i])
+    return (g[k] - g[k - 1]) / (t[k] - t[k - 1])
+
+
+def rebound_apexes(t, g, lowest=0.01):
+    """(t, g) of each rebound's highest point: the local maxima of the gap after the first contact (t > 0)
+    higher than `lowest` (a resting sphere's film and the measured points' scatter lie below it)."""
+    return [(t[i], g[i]) for i in range(1, len(g) - 1) if t[i] > 0 and g[i] > lowest and g[i - 1] < g[i] >= g[i + 1]]
 
 
 def gondret(hydro=HYDRO):
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     for ax, st in zip(axes, (27, 152)):
-        d, rows = gondret_run(st, hydro, extra=WITHOUT)
+        d = GONDRET[st][0]
         tref = math.sqrt(d / 9.81)
-        u_in, u_out, _ = impact(rows, d / 2)
-        first = next(i for i, x in enumerate(rows) if (x["z"] - d / 2) / d <= 2e-4)
-        t0 = rows[first]["time"]
-        ax.plot([(x["time"] - t0) / tref for x in rows], [(x["z"] - d / 2) / d for x in rows], "-", label="vpsolve d/dx %d" % res)
+        te, ge = gondret_measured(st)
+        u_exp = measured_rebound(te, ge, d)
+        print("gondret: St %d measured: rebound speed at %g d %.3f m/s, e %.2f over u_in %.3f, e/e_dry %.2f (exp(-35/St) %.3f)" %
+              (st, GAP_REBOUND, u_exp, u_exp / GONDRET[st][3], GONDRET[st][3], u_exp / GONDRET[st][3] / E_DRY, math.exp(-35 / st)))
+        te, ge = [x / tref for x in te], [x / d for x in ge]
+        exp = rebound_apexes(te, ge)
+        ax.plot(te, ge, "o", mfc="none", color="k", ms=4, label="Gondret et al. 2002 (measured)")
+        for release in GONDRET_RELEASES:
+            release = release or GONDRET[st][5]
+            d, rows = gondret_run(st, hydro, extra=WITHOUT, release=release)
+            u_in, u_out, _ = impact(rows, d / 2)
+            first = next(i for i, x in enumerate(rows) if (x["z"] - d / 2) / d <= 2e-4)
+            t0 = rows[first]["time"]
+            ts = [(x["time"] - t0) / tref for x in rows]
+            gs = [(x["z"] - d / 2) / d for x in rows]
+            ax.plot(ts, gs, "-", label="vpsolve d/dx %d, released %d d above at u_in" % (res, release))
+            sim = rebound_apexes(ts, gs)
+            st_in = GONDRET[st][1] * u_in * d / (9 * GONDRET[st][2])  # St of u(1 d): (rho_p/rho) u d / (9 nu)
+            ok = sim and exp and abs(sim[0][1] / exp[0][1] - 1) <= APEX_BAND
+            print("gondret: St %d (-contact_hydro %s, d/dx %d, box %d d wide, released %d d above): u(1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, "
+                  "e/e_dry %.3f (exp(-35/St) %.3f at the approach St %.1f); apexes gap/d at t/t_ref: %s; measured %s; "
+                  "first apex %s: %s" %
+                  (st, hydro, res, width, release, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st_in), st_in,
+                   ", ".join("%.3f at %.2f" % (g, t) for t, g in sim[:3]) or "none",
+                   ", ".join("%.3f at %.2f" % (g, t) for t, g in exp[:3]),
+                   "%+.0f %%" % (100 * (sim[0][1] / exp[0][1] - 1)) if sim else "none",
+                   "ok (within %d %%)" % (100 * APEX_BAND) if ok else "SHORT"), flush=True)
         ax.axhline(0, color="k", lw=0.5)
-        ap = apexes(rows, d / 2)
-        st_in = GONDRET[st][1] * u_in * d / (9 * GONDRET[st][2])  # St of u(1 d): (rho_p/rho) u d / (9 nu)
-        print("gondret: St %d (-contact_hydro %s): u(1 d) %.4f m/s (experiment's u_in %.3f), e %.3f, e/e_dry %.3f "
-              "(exp(-35/St) %.3f; at the approach St %.1f of u(1 d) %.3f); apex heights (gap/d) %s" %
-              (st, hydro, u_in, GONDRET[st][3], u_out / u_in, u_out / u_in / E_DRY, math.exp(-35 / st), st_in,
-               math.exp(-35 / st_in), ", ".join("%.3f" % x for x in ap[:3]) or "none"), flush=True)
         ax.set_title("Gondret St %d: d = %g mm, t_ref = sqrt(d/g) = %.4f s" % (st, d * 1e3, tref), fontsize=9)
         ax.set_xlabel("(t - t_contact) / t_ref")
         ax.set_ylabel("gap / d")
+        ax.set_xlim(left=-1.2)
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "gondret_trajectories%s.png" % SUFFIX), dpi=120)
@@ -923,7 +966,7 @@ STUDIES = ("restitution", "glass_grid", "timestep", "gondret", "oblique", "calib
            "pair", "harada", "inertia")
 
 if __name__ == "__main__":
-    what = chosen_study(__doc__, STUDIES, valued=("--res",))
+    what = chosen_study(__doc__, STUDIES, valued=("--res", "--width"))
     for name in STUDIES:
         if what in (name, "all"):
             globals()[name]()

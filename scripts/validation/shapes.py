@@ -19,13 +19,16 @@
   zigzag: an oblate spheroid (aspect 1/3, density ratio 1.5) at Galileo number 250, above the
         threshold of secondary motions, released 5 degrees from flat: its tilt, spin and drift
         (d_v/dx 10, a coarse demonstration; about 20 minutes)
-usage: shapes.py [drag|jeffery|bounce|settling|pair|zigzag|all] [--res N] [--reuse]
+  threshold: an oblate spheroid of aspect 2/3, density ratio 1.5, at Ga 111 and 152, either side of
+        the onset of a steady oblique path (Moriche, Uhlmann & Dusek): path angle and tilt
+        (d_v/dx 10; about an hour)
+usage: shapes.py [drag|jeffery|bounce|settling|pair|zigzag|threshold|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
 import csv, math, os, subprocess, sys
 from common import plt, root, ranks, vpsolve, outdir, scratch, chosen_study
 
-what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling", "pair", "zigzag"), valued=("--res",))
+what = chosen_study(__doc__, ("drag", "jeffery", "bounce", "settling", "pair", "zigzag", "threshold"), valued=("--res",))
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 12
 reuse = "--reuse" in sys.argv
 RV = 0.126            # equal-volume radius (m) in the box of side 1
@@ -351,28 +354,42 @@ def pair():
 
 
 
-def zigzag():
-    """d_v = 4 mm (a = 2.884 mm, c = 0.961 mm: 4.8 cells thick at d_v/dx 10), density 1500 in 1000,
-    mu 2.24e-3: Ga = sqrt(0.5 g d_v^3) / nu = 250. Periodic sides 6 d_v, 160 mm tall, released at
-    rest at 145 mm with its axis 5 degrees from the vertical."""
-    out = os.path.join(scratch, "vp_val_shape_zigzag")
+def free_fall(out, aspect, mu, height, final):
+    """An oblate spheroid of d_v = 4 mm (d_v/dx 10), density 1500 in 1000, released at rest 15 mm below
+    the top of a box with periodic sides 6 d_v, its axis 5 degrees from the vertical in the x-z plane.
+    Returns time, the axis' tilt in that plane (degrees, signed), the drift along x (in d_v), the fall
+    speed and the horizontal speed."""
     if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
-        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,0.16", "-grid_n", "60,60,400",
-                        "-bc_xlo", "periodic", "-bc_xhi", "periodic", "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000",
-                        "-fluid_mu", "0.00224", "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,0.145",
-                        "-particle_shape", "spheroid", "-particle_radius", "0.002884", "-particle_aspect", "0.3333333",
-                        "-particle_axis", "0.0872,0,0.9962", "-particle_density", "1500", "-contact_tc", "1e-3", "-dem_substeps", "20",
-                        "-time_cfl", "0.5", "-time_final", "1.2", "-track_particles", "all", "-output_dir", out, "-output_overwrite",
-                        "-output_dt", "0", "-monitor_every", "0"], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,%g" % height,
+                        "-grid_n", "60,60,%d" % round(height / 4e-4), "-bc_xlo", "periodic", "-bc_xhi", "periodic",
+                        "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000", "-fluid_mu", mu,
+                        "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,%g" % (height - 0.015),
+                        "-particle_shape", "spheroid", "-particle_radius", "%.7g" % (0.002 / aspect ** (1 / 3)),
+                        "-particle_aspect", "%.7g" % aspect, "-particle_axis", "0.0872,0,0.9962", "-particle_density", "1500",
+                        "-contact_tc", "1e-3", "-dem_substeps", "20", "-time_cfl", "0.5", "-time_final", final,
+                        "-track_particles", "all", "-output_dir", out, "-output_overwrite", "-output_dt", "0",
+                        "-monitor_every", "0"], check=True, stdout=subprocess.DEVNULL)
     rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
     t = [float(r["time"]) for r in rows]
-    tilt, drift = [], []  # in the plane of the initial tilt (x, z): signed
+    tilt = []
     for r in rows:
         w, qx, qy, qz = (float(r[c]) for c in ("qw", "qx", "qy", "qz"))
         ax, az = 2 * (qx * qz + w * qy), 1 - 2 * (qx * qx + qy * qy)
         tilt.append(math.degrees(math.atan2(ax if az > 0 else -ax, abs(az))))
-        drift.append((float(r["x"]) - 0.012) / 0.004)
+    drift = [(float(r["x"]) - 0.012) / 0.004 for r in rows]
     speed = [-float(r["vz"]) for r in rows]
+    side = [math.hypot(float(r["vx"]), float(r["vy"])) for r in rows]
+    return t, tilt, drift, speed, side
+
+
+def galileo_mu(ga):
+    """The viscosity (Pa s) giving Ga = sqrt((rho_p / rho - 1) g d_v^3) / nu for the bodies of free_fall."""
+    return 1000 * math.sqrt(0.5 * 9.81 * 0.004 ** 3) / ga
+
+
+def zigzag():
+    """Aspect 1/3 (a = 2.884 mm, c = 0.961 mm: 4.8 cells thick) at Ga 250 in a box 160 mm tall."""
+    t, tilt, drift, speed, _ = free_fall(os.path.join(scratch, "vp_val_shape_zigzag"), 1 / 3, 0.00224, 0.16, 1.2)
     late = [k for k in range(len(t)) if t[k] > 0.5]
     crossings = [t[k] for k in late[1:] if tilt[k - 1] * tilt[k] < 0]
     swing = [max(tilt[k] for k in late), min(tilt[k] for k in late)]
@@ -390,7 +407,35 @@ def zigzag():
                 "Oblate spheroid (aspect 1/3) at Ga 250: a growing zigzag (d_v/dx 10, coarse)", "spheroid_zigzag.png")
 
 
+# Moriche, Uhlmann & Dusek ("On the clustering of low-aspect-ratio oblate spheroids settling in ambient
+# fluid", J. Fluid Mech.): a single oblate spheroid of aspect 1/1.5, density ratio 1.5, falls on a
+# steady vertical path at Ga 111 and a steady oblique one at Ga 152.
+THRESHOLD = ((111, "steady vertical"), (152, "steady oblique"))
+
+
+def threshold():
+    """Aspect 2/3 (7.6 cells thick) at Ga 111 and 152 in a box 320 mm tall, 1.6 s."""
+    fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
+    for ga, regime in THRESHOLD:
+        mu = galileo_mu(ga)
+        t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d" % ga), 2 / 3, "%.6g" % mu, 0.32, 1.6)
+        late = [k for k in range(len(t)) if t[k] > t[-1] - 0.3]
+        u = sum(speed[k] for k in late) / len(late)
+        angle = math.degrees(math.atan2(sum(side[k] for k in late) / len(late), u))
+        print("threshold: Ga %d (%s in Moriche et al.): over the last 0.3 s fall speed %.4f m/s (Re %.0f), path %.2f degrees "
+              "from the vertical (from %.2f to %.2f), axis tilt %+.2f to %+.2f degrees; drift along x %.2f d_v" %
+              (ga, regime, u, u * 0.004 * 1000 / mu, angle, min(math.degrees(math.atan2(side[k], speed[k])) for k in late),
+               max(math.degrees(math.atan2(side[k], speed[k])) for k in late), min(tilt[k] for k in late),
+               max(tilt[k] for k in late), drift[-1]), flush=True)
+        axes[0].plot(t, tilt, label="Ga %d (%s)" % (ga, regime))
+        axes[1].plot(t, [math.degrees(math.atan2(h, max(v, 1e-9))) for h, v in zip(side, speed)])
+    axes[0].axhline(0, color="0.7", lw=0.8)
+    time_panels(fig, axes, ("axis tilt in the x-z plane (deg)", "path angle from the vertical (deg)"),
+                "Oblate spheroid (aspect 2/3, density ratio 1.5) either side of the threshold (d_v/dx 10)",
+                "spheroid_threshold.png")
+
+
 for name, study in (("drag", drag), ("jeffery", jeffery), ("bounce", bounce), ("settling", settling), ("pair", pair),
-                    ("zigzag", zigzag)):
+                    ("zigzag", zigzag), ("threshold", threshold)):
     if what in (name, "all"):
         study()
