@@ -475,6 +475,7 @@ def gondret(hydro=HYDRO):
         ax.set_xlabel("(t - t_contact) / t_ref")
         ax.set_ylabel("gap / d")
         ax.set_xlim(left=-1.2)
+        ax.set_ylim(-0.05, 1.5 * exp[0][1])
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "gondret_trajectories%s.png" % SUFFIX), dpi=120)

@@ -360,15 +360,16 @@ def free_fall(out, aspect, mu, height, final):
     Returns time, the axis' tilt in that plane (degrees, signed), the drift along x (in d_v), the fall
     speed and the horizontal speed."""
     if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
-        subprocess.run(["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,%g" % height,
-                        "-grid_n", "60,60,%d" % round(height / 4e-4), "-bc_xlo", "periodic", "-bc_xhi", "periodic",
-                        "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000", "-fluid_mu", mu,
-                        "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,%g" % (height - 0.015),
-                        "-particle_shape", "spheroid", "-particle_radius", "%.7g" % (0.002 / aspect ** (1 / 3)),
-                        "-particle_aspect", "%.7g" % aspect, "-particle_axis", "0.0872,0,0.9962", "-particle_density", "1500",
-                        "-contact_tc", "1e-3", "-dem_substeps", "20", "-time_cfl", "0.5", "-time_final", final,
-                        "-track_particles", "all", "-output_dir", out, "-output_overwrite", "-output_dt", "0",
-                        "-monitor_every", "0"], check=True, stdout=subprocess.DEVNULL)
+        cmd = ["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,%g" % height,
+               "-grid_n", "60,60,%d" % round(height / 4e-4), "-bc_xlo", "periodic", "-bc_xhi", "periodic",
+               "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000", "-fluid_mu", mu,
+               "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,%g" % (height - 0.015),
+               "-particle_shape", "spheroid", "-particle_radius", "%.7g" % (0.002 / aspect ** (1 / 3)),
+               "-particle_aspect", "%.7g" % aspect, "-particle_axis", "0.0872,0,0.9962", "-particle_density", "1500",
+               "-contact_tc", "1e-3", "-dem_substeps", "20", "-time_cfl", "0.5", "-time_final", final,
+               "-track_particles", "all", "-output_dir", out, "-output_overwrite", "-output_dt", "0",
+               "-monitor_every", "0"]
+        subprocess.run([str(x) for x in cmd], check=True, stdout=subprocess.DEVNULL)
     rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
     t = [float(r["time"]) for r in rows]
     tilt = []
