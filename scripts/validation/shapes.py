@@ -415,11 +415,11 @@ THRESHOLD = ((111, "steady vertical"), (152, "steady oblique"))
 
 
 def threshold():
-    """Aspect 2/3 (7.6 cells thick) at Ga 111 and 152 in a box 320 mm tall, 1.6 s."""
+    """Aspect 2/3 (7.6 cells thick) at Ga 111 and 152 in a box 320 mm tall, 1.2 s."""
     fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
     for ga, regime in THRESHOLD:
         mu = galileo_mu(ga)
-        t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d" % ga), 2 / 3, "%.6g" % mu, 0.32, 1.6)
+        t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d" % ga), 2 / 3, "%.6g" % mu, 0.32, 1.2)
         late = [k for k in range(len(t)) if t[k] > t[-1] - 0.3]
         u = sum(speed[k] for k in late) / len(late)
         angle = math.degrees(math.atan2(sum(side[k] for k in late) / len(late), u))

@@ -92,7 +92,7 @@ void ParticleTracker::record(const RunView& run)
     pending_[static_cast<std::int64_t>(v[0])] += line;
     ++pendingRows_;
   }
-  if (pendingRows_ > 20000) flush();
+  if (pendingRows_ > 20000 || MPI_Wtime() - lastFlush_ >= kFlushSeconds) flush();
 }
 
 void ParticleTracker::flush()
@@ -106,6 +106,7 @@ void ParticleTracker::flush()
     text.clear();
   }
   pendingRows_ = 0;
+  lastFlush_ = MPI_Wtime();
 }
 
 } // namespace vp

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The run lifecycle as a user meets it (docs/robustness.md); one scenario per call:
 #   check_lifecycle.sh <scenario> <vpsolve> <work dir>
-# help | rerun | output_dir_file | restart_setup | signal | wall_limit | disk_full | defaults
+# help | rerun | output_dir_file | restart_setup | signal | killed | wall_limit | disk_full | defaults
 set -u
 scenario=$1 vp=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
@@ -56,6 +56,16 @@ signal)  # SIGTERM: a checkpoint at the next step boundary, exit 128 + 15, and t
   ls out | grep -q "checkpoint_0.*h5" || fail "no checkpoint"
   grep -q '"stop_reason": "signal SIGTERM"' out/run.json || fail "run.json lacks the stop reason"
   run -grid_n 16,16,16 -time_max_steps 100000 -time_final 1e9 -restart out/checkpoint_latest.h5 -output_dir out -time_wall_limit 1 >cont.log 2>&1 || fail "the run did not continue from the checkpoint" ;;
+killed)  # killed outright (no end, no checkpoint): the tracked particle's rows of all but the last 10 s are on disk
+  "$vp" -grid_n 32,32,32 -monitor_every 0 -fluid_mu 0.01 -gravity 0,0,-9.81 -particle_position 0.5,0.5,0.7 \
+    -particle_radius 0.1 -particle_density 1500 -track_particles all -time_dt 1e-3 -time_final 1e9 -output_dir out >kill.log 2>&1 &
+  pid=$!
+  sleep 15
+  steps=$(($(lines out/diagnostics.csv) - 1))
+  kill -KILL $pid; wait $pid
+  rows=$(($(lines out/particle_0.csv) - 1))
+  [ "$steps" -gt 50 ] || fail "only $steps steps in 15 s"
+  [ $((2 * rows)) -ge "$steps" ] || fail "particle_0.csv kept $rows rows of the $steps steps the run had made" ;;
 wall_limit)  # -time_wall_limit: a checkpoint and exit 0
   run -grid_n 16,16,16 -time_max_steps 100000 -time_final 1e9 -time_wall_limit 2 -output_dir out >wl.log 2>&1 || fail "exit status $?"
   grep -q "reached -time_wall_limit" wl.log || fail "no stop reason"

@@ -377,9 +377,9 @@ vp_run_failure(escaped_particle 1 "stopped at step 1, t = 0.001 s: failed: parti
 vp_run_failure(soft_contact 2 "contact between particle .* overlaps by .* % of the smaller diameter .*shorten -contact_tc"
                -options_file ${VP_CASES}/granular_collapse_dry.opts -particles_file ${PROJECT_SOURCE_DIR}/cases/data/column_2000.csv
                -time_dt 1e-3 -time_max_steps 20)
-# The lifecycle: help, used directories, changed set-up on restart, SIGTERM, wall-time limit, a full
+# The lifecycle: help, used directories, changed set-up on restart, SIGTERM, SIGKILL, wall-time limit, a full
 # disk (skipped where a small file system cannot be mounted), defaults that work.
-foreach(scenario help rerun output_dir_file restart_setup signal wall_limit disk_full defaults)
+foreach(scenario help rerun output_dir_file restart_setup signal killed wall_limit disk_full defaults)
   add_test(NAME lifecycle_${scenario} COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/regression/check_lifecycle.sh ${scenario}
            $<TARGET_FILE:vpsolve> ${CMAKE_CURRENT_BINARY_DIR}/lifecycle/${scenario})
   set_tests_properties(lifecycle_${scenario} PROPERTIES ENVIRONMENT "${VP_MPI_ENV}" SKIP_RETURN_CODE 77)

@@ -2,8 +2,9 @@
 // Time series of tracked particles (-track_particles): particle_<id>.csv with columns
 // time,x,y,z,vx,vy,vz,wx,wy,wz,fx,fy,fz (hydrodynamic force) followed by fcx,fcy,fcz (contact,
 // lubrication and gravity force) and tx,ty,tz (non-hydrodynamic torque). Owners send their rows to
-// rank 0, which buffers them and appends them on flush() (at every progress line, checkpoint and the
-// end of the run).
+// rank 0, which buffers them and appends them on flush(): at every progress line, checkpoint and the
+// end of the run, and at least every kFlushSeconds of wall time, so a run killed outright (no end,
+// no checkpoint) loses no more than that.
 #include "vp/io/Monitor.hpp"
 #include "vp/particles/ParticleConfig.hpp"
 #include "vp/particles/ParticleStore.hpp"
@@ -36,8 +37,10 @@ private:
   std::string dir_;
   bool all_;
   std::set<std::int64_t> ids_;
+  static constexpr double kFlushSeconds = 10;
   std::map<std::int64_t, std::string> pending_;
   std::size_t pendingRows_ = 0;
+  double lastFlush_ = MPI_Wtime();  // rank 0's wall time of the last flush
 };
 
 } // namespace vp
