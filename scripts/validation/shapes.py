@@ -21,7 +21,7 @@
         (d_v/dx 10, a coarse demonstration; about 20 minutes)
   threshold: an oblate spheroid of aspect 2/3, density ratio 1.5, at Ga 111 and 152, either side of
         the onset of a steady oblique path (Moriche, Uhlmann & Dusek): path angle and tilt
-        (d_v/dx 10; about an hour)
+        (d_v/dx 10 or --res N; about an hour at 10, 20 minutes at 8)
 usage: shapes.py [drag|jeffery|bounce|settling|pair|zigzag|threshold|all] [--res N] [--reuse]
   --res N: equal-volume diameter in cells (12)
   --reuse: plot the runs already in $VP_SCRATCH/vp_val_shape_* instead of running them again"""
@@ -354,14 +354,15 @@ def pair():
 
 
 
-def free_fall(out, aspect, mu, height, final):
-    """An oblate spheroid of d_v = 4 mm (d_v/dx 10), density 1500 in 1000, released at rest 15 mm below
+def free_fall(out, aspect, mu, height, final, cells=10):
+    """An oblate spheroid of d_v = 4 mm (d_v/dx `cells`), density 1500 in 1000, released at rest 15 mm below
     the top of a box with periodic sides 6 d_v, its axis 5 degrees from the vertical in the x-z plane.
     Returns time, the axis' tilt in that plane (degrees, signed), the drift along x (in d_v), the fall
     speed and the horizontal speed."""
     if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
+        h = 0.004 / cells
         cmd = ["mpirun", "-n", ranks, vpsolve, "-grid_lo", "0,0,0", "-grid_hi", "0.024,0.024,%g" % height,
-               "-grid_n", "60,60,%d" % round(height / 4e-4), "-bc_xlo", "periodic", "-bc_xhi", "periodic",
+               "-grid_n", "%d,%d,%d" % (6 * cells, 6 * cells, round(height / h)), "-bc_xlo", "periodic", "-bc_xhi", "periodic",
                "-bc_ylo", "periodic", "-bc_yhi", "periodic", "-fluid_rho", "1000", "-fluid_mu", mu,
                "-gravity", "0,0,-9.81", "-particle_position", "0.012,0.012,%g" % (height - 0.015),
                "-particle_shape", "spheroid", "-particle_radius", "%.7g" % (0.002 / aspect ** (1 / 3)),
@@ -415,11 +416,14 @@ THRESHOLD = ((111, "steady vertical"), (152, "steady oblique"))
 
 
 def threshold():
-    """Aspect 2/3 (7.6 cells thick) at Ga 111 and 152 in a box 320 mm tall, 1.2 s."""
+    """Aspect 2/3 (0.76 d_v thick: 7.6 cells at d_v/dx 10, the default; --res N) at Ga 111 and 152 in a box
+    260 mm tall, 1 s."""
+    cells = res if "--res" in sys.argv else 10
     fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
     for ga, regime in THRESHOLD:
         mu = galileo_mu(ga)
-        t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d" % ga), 2 / 3, "%.6g" % mu, 0.32, 1.2)
+        t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d_r%d" % (ga, cells)), 2 / 3,
+                                                "%.6g" % mu, 0.26, 1.0, cells)
         late = [k for k in range(len(t)) if t[k] > t[-1] - 0.3]
         u = sum(speed[k] for k in late) / len(late)
         angle = math.degrees(math.atan2(sum(side[k] for k in late) / len(late), u))
@@ -432,7 +436,7 @@ def threshold():
         axes[1].plot(t, [math.degrees(math.atan2(h, max(v, 1e-9))) for h, v in zip(side, speed)])
     axes[0].axhline(0, color="0.7", lw=0.8)
     time_panels(fig, axes, ("axis tilt in the x-z plane (deg)", "path angle from the vertical (deg)"),
-                "Oblate spheroid (aspect 2/3, density ratio 1.5) either side of the threshold (d_v/dx 10)",
+                "Oblate spheroid (aspect 2/3, density ratio 1.5) either side of the threshold (d_v/dx %d)" % cells,
                 "spheroid_threshold.png")
 
 
