@@ -424,16 +424,16 @@ def threshold():
         mu = galileo_mu(ga)
         t, tilt, drift, speed, side = free_fall(os.path.join(scratch, "vp_val_shape_threshold_ga%d_r%d" % (ga, cells)), 2 / 3,
                                                 "%.6g" % mu, 0.26, 1.0, cells)
+        path = [math.degrees(math.atan2(h, max(v, 1e-9))) for h, v in zip(side, speed)]  # from the vertical
         late = [k for k in range(len(t)) if t[k] > t[-1] - 0.3]
         u = sum(speed[k] for k in late) / len(late)
         angle = math.degrees(math.atan2(sum(side[k] for k in late) / len(late), u))
         print("threshold: Ga %d (%s in Moriche et al.): over the last 0.3 s fall speed %.4f m/s (Re %.0f), path %.2f degrees "
               "from the vertical (from %.2f to %.2f), axis tilt %+.2f to %+.2f degrees; drift along x %.2f d_v" %
-              (ga, regime, u, u * 0.004 * 1000 / mu, angle, min(math.degrees(math.atan2(side[k], speed[k])) for k in late),
-               max(math.degrees(math.atan2(side[k], speed[k])) for k in late), min(tilt[k] for k in late),
-               max(tilt[k] for k in late), drift[-1]), flush=True)
+              (ga, regime, u, u * 0.004 * 1000 / mu, angle, min(path[k] for k in late), max(path[k] for k in late),
+               min(tilt[k] for k in late), max(tilt[k] for k in late), drift[-1]), flush=True)
         axes[0].plot(t, tilt, label="Ga %d (%s)" % (ga, regime))
-        axes[1].plot(t, [math.degrees(math.atan2(h, max(v, 1e-9))) for h, v in zip(side, speed)])
+        axes[1].plot(t, path)
     axes[0].axhline(0, color="0.7", lw=0.8)
     time_panels(fig, axes, ("axis tilt in the x-z plane (deg)", "path angle from the vertical (deg)"),
                 "Oblate spheroid (aspect 2/3, density ratio 1.5) either side of the threshold (d_v/dx %d)" % cells,
