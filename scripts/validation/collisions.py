@@ -28,9 +28,12 @@
                takes it
   inertia:     e at St 20, 30, 60 and 100 (d/dx 12) with and without the liquid's O(Re) inertia in the
                gap (-lub_inertia)
-usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|replacement|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--width W] [--reuse] [--fine]
+usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibration|replacement|confinement|sensitivity|pair|harada|inertia|all] [--res N] [--cfl C] [--release H] [--width W] [--reuse] [--fine]
                      [--cases-only] [--roughness] [--no-departure] [--no-history] [--short]
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
+  --cfl C: the restitution runs' CFL at the release speed (default 0.5; 0.25 at St 1000 in any case)
+  --release H: restitution's spheres released H d above the floor (default 3, at 0.585 m/s); above 3 at
+               their terminal speed (a drag curve), arriving as settling spheres do (nominal St >= 20)
   --width W: the Gondret box's width in d (default 6)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
@@ -48,6 +51,8 @@ from common import plt, root, ranks, vpsolve, harada as harada_bin, scratch, out
 
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
+CFL = float(sys.argv[sys.argv.index("--cfl") + 1]) if "--cfl" in sys.argv else 0.5  # the restitution runs' largest CFL
+RELEASE = int(sys.argv[sys.argv.index("--release") + 1]) if "--release" in sys.argv else 3  # restitution's release gap (d)
 E_DRY = 0.97
 HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it (the default)
 STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
@@ -124,6 +129,16 @@ def departure(rows, a, mu, rho_p=STEEL):
     return g[c1], rows[c1]["vz"], u_out, impulse, theory
 
 
+def approach_rate(rows, a, rho_p, rho_f, gap=GAP_APPROACH):
+    """The approach speed's rate of change where the gap passes `gap` d, over the buoyant gravity
+    g' = g (1 - rho_f / rho_p): 0 for a sphere arriving at its terminal speed, negative while the
+    liquid still slows it (released too fast or too low)."""
+    g = [(x["z"] - a) / (2 * a) for x in rows]
+    i = next(i for i in range(1, len(rows)) if g[i - 1] > gap >= g[i])
+    j = max(0, i - 5)
+    return -(rows[i]["vz"] - rows[j]["vz"]) / (rows[i]["time"] - rows[j]["time"]) / (9.81 * (1 - rho_f / rho_p))
+
+
 def brenner_integral(lo, hi, resistance=None, n=2000):
     """The integral of a squeeze resistance F / (6 pi mu a V) (Brenner's, a sphere at a wall, unless
     given) over the gap eps = h/a from lo to hi: a rigid sphere's velocity loss over those gaps is
@@ -137,23 +152,38 @@ def brenner_integral(lo, hi, resistance=None, n=2000):
 SHORT = ["-contact_tc_steps", 0, "-contact_tc", 5e-5]  # a real impact's duration, resolved by the sub-steps
 
 
-def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_p=STEEL, rho_f=RHO_F):
+def terminal_speed(rho_p, rho_f, mu, d, g=9.81):
+    """A sphere's settling speed from the standard drag curve (Schiller-Naumann with a Newton-regime
+    term; Clift, Grace & Weber): where a sphere released from high enough arrives."""
+    u = 0.1
+    for _ in range(200):  # fixed point: converges in a few tens of iterations for Re 0.1-1e4
+        re = rho_f * u * d / mu
+        cd = 24 / re * (1 + 0.15 * re ** 0.687) + 0.42 / (1 + 42500 / re ** 1.16)
+        u = math.sqrt(4 / 3 * g * d * (rho_p / rho_f - 1) / cd)
+    return u
+
+
+def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_p=STEEL, rho_f=RHO_F, release=3):
     """Sphere of diameter d (steel in the cases' liquid unless rho_p, rho_f say otherwise) at nominal St
-    (viscosity from St with u = 0.585 m/s) in a 6d x 6d x 7d box, released 3 d above the floor at 0.585
-    m/s. Returns (St at impact, e, u_in, the tracked rows)."""
+    (viscosity from St with u = 0.585 m/s) in a 6d x 6d x (release + 4)d box, released `release` d above
+    the floor at 0.585 m/s (3 d) or, released higher, at its terminal speed (terminal_speed), so that it
+    arrives as a settling sphere does. Returns (St at impact, e, u_in, the tracked rows)."""
     r = r or res
-    a, u = d / 2, U_RELEASE
+    a = d / 2
     mu = study_mu(st, d, rho_p)
+    u = U_RELEASE if release == 3 else terminal_speed(rho_p, rho_f, mu, d)
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
     others = [str(o) for o in extra if o not in PLAIN]  # the run's options beyond the plain projection
     tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
     tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
+    tag += "" if cfl == default_cfl(st) else "_cfl%g" % cfl
+    tag += "" if release == 3 else "_h%g" % release
     out = os.path.join(scratch, "vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, tag, r, d)))
-    rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, 7 * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, 7 * d),
-               "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, 3.5 * d), "-particle_radius", a,
-               "-fluid_mu", mu, "-time_dt", dt, "-time_final", (20 if st <= 20 else 12) * d / u + 20 * dt, "-dem_substeps", 200,
+    rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, (release + 4) * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, (release + 4) * d),
+               "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, (release + 0.5) * d), "-particle_radius", a, "-particle_velocity", "0,0,%g" % -u,
+               "-fluid_mu", mu, "-time_dt", dt, "-time_final", ((20 if st <= 20 else 12) + release - 3) * d / u + 20 * dt, "-dem_substeps", 200,
                "-particle_density", rho_p, "-fluid_rho", rho_f,
                "-contact_hydro", hydro, "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *extra)
     u_in, u_out, touched = impact(rows, a)
@@ -165,11 +195,16 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
 ST_LIST = [5, 20, 30, 40, 70, 100, 152, 300, 500, 1000]
 
 
-def study_cfl(st):
+def default_cfl(st):
     """CFL of the e(St) runs at the release speed: 0.5, and 0.25 at St 1000 (impact Re about 1040), where the
     liquid squeezed out at the impact, advected by the central scheme, passes the health check's CFL
     1.5 at 0.5; the rebound converges in the step (d/dx 12: 0.890 / 0.889 at CFL 0.25 / 0.125)."""
     return 0.25 if st >= 1000 else 0.5
+
+
+def study_cfl(st):
+    """The restitution runs' CFL: the default, or --cfl where that is smaller."""
+    return min(CFL, default_cfl(st))
 
 PLAIN = ["-penalization_projection", "plain"]  # the cases use weighted
 # The cases replace the excluded resolved force by the Basset history force (-contact_hydro_history 1)
@@ -220,6 +255,8 @@ def restitution():
             (HYDRO, PLAIN, "^", [40, 152, 500], steel))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
         sets = sets[:1]
+    if RELEASE > 3:  # settling spheres: the cases' set-up, steel and glass in water
+        sets = (sets[0], (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)))
     if "--roughness" in sys.argv:  # the cases' set-up and the same with Gondret's reported roughness
         sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST, steel))
     if WITHOUT:  # the cases' set-up with and without the departure, steel and glass in water
@@ -243,16 +280,19 @@ def restitution():
                         cases if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
+            if RELEASE > 3 and st < 20:  # settling at St below 10: no rebound, as released at 3 d
+                continue
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
-            r = restitution_run(st, hydro, extra=extra, label=label, cfl=study_cfl(st), rho_p=rho_p, rho_f=rho_f)
+            r = restitution_run(st, hydro, extra=extra, label=label, cfl=study_cfl(st), rho_p=rho_p, rho_f=rho_f, release=RELEASE)
             if r is None:
                 print("restitution: St %g %s: no contact within the run (a creeping approach: no rebound)" % (st, name), flush=True)
                 continue
             sti, e, u_in, _ = r
             pts.append((sti, e / E_DRY))
             ok = "" if not 20 <= sti <= 1000 else (" ok" if abs(e / E_DRY - math.exp(-35 / sti)) <= 0.1 else " OUT")
-            print("restitution: -contact_hydro %-24s nominal St %4g: u(1 d) %.4f m/s, St %.1f, e %.3f, e/e_dry %.3f, "
-                  "exp(-35/St) %.3f%s" % (name, st, u_in, sti, e, e / E_DRY, math.exp(-35 / sti), ok), flush=True)
+            print("restitution: -contact_hydro %-24s nominal St %4g: u(1 d) %.4f m/s (its rate of change %+.2f g'), St %.1f, e %.3f, "
+                  "e/e_dry %.3f, exp(-35/St) %.3f%s" % (name, st, u_in, approach_rate(r[3], D3 / 2, rho_p, rho_f), sti, e, e / E_DRY,
+                                                        math.exp(-35 / sti), ok), flush=True)
             out = departure(r[3], D3 / 2, study_mu(st, D3, rho_p), rho_p) if hydro == HYDRO and extra in ([], NO_DEPARTURE, NO_HISTORY) else None
             if out:
                 print("restitution: departure at nominal St %4g: %.3f m/s at gap %.3f d (the first step out of contact), "
@@ -263,8 +303,9 @@ def restitution():
         ax.semilogx([p[0] for p in pts], [p[1] for p in pts], mark, mfc="none", label="vpsolve, -contact_hydro %s" % name)
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 1 d)")
     ax.set_ylabel("e / e_dry")
-    ax.set_title("Restitution on a wall (steel in the cases' liquid%s), d/dx = %d" %
-                 (", glass in water" if WITHOUT or "--no-history" in sys.argv or "--models" in sys.argv else "", res), fontsize=9)
+    ax.set_title("Restitution on a wall (steel in the cases' liquid%s), d/dx = %d%s" %
+                 (", glass in water" if WITHOUT or "--no-history" in sys.argv or "--models" in sys.argv or RELEASE > 3 else "", res,
+                  (", CFL %g" % CFL if CFL < 0.5 else "") + (", released %d d above at the terminal speed" % RELEASE if RELEASE > 3 else "")), fontsize=9)
     print("restitution: -contact_hydro %s: %s" % (HYDRO, "all in the band (St 20-1000)" if not failures else
                                                  "outside the band at nominal St %s" % failures), flush=True)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
@@ -273,6 +314,10 @@ def restitution():
     name = ("restitution_departure.png" if WITHOUT else "restitution_history.png" if "--no-history" in sys.argv else
             "restitution_roughness.png" if "--roughness" in sys.argv else "restitution_models.png" if "--models" in sys.argv else
             "restitution_stokes.png")
+    if CFL < 0.5:
+        name = name.replace(".png", "_cfl%g.png" % CFL)
+    if RELEASE != 3:
+        name = name.replace(".png", "_h%d.png" % RELEASE)
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
 
