@@ -33,7 +33,8 @@ usage: collisions.py [restitution|glass_grid|timestep|gondret|oblique|calibratio
   --res N: grid (d/dx) of the restitution and Gondret runs (default 16)
   --cfl C: the restitution runs' CFL at the release speed (default 0.5; 0.25 at St 1000 in any case)
   --release H: restitution's spheres released H d above the floor (default 3, at 0.585 m/s); above 3 at
-               their terminal speed (a drag curve), arriving as settling spheres do (nominal St >= 20)
+               their terminal speed (a drag curve), arriving as settling spheres do (nominal St >= 20);
+               glass at nominal St 500 (Re 1100) needs --cfl 0.25 (at 0.5 the health check stops it)
   --width W: the Gondret box's width in d (default 6)
   --cases-only: restitution with the cases' set-up only (not keep and the plain projection)
   --roughness: restitution with the cases' set-up and the same with Gondret's reported roughness (5e-5 d)
