@@ -14,7 +14,8 @@
 # usage (through scripts/validate): scripts/validate dam_break [N|grid [T [S]]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
 # second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; d/dx 4 on
-# one rank, the two columns side by side (NP=1), 0.4-0.5 s (7-8 minutes).
+# one rank, the two columns side by side (NP=1), 0.4-0.5 s (7-8 minutes) when both shared one core
+# (Open MPI's binding, now off here); S 2 at d/dx 4, 0.56 s per step with a core to itself.
 set -euo pipefail
 case ${1:-8} in
   -h|--help) sed -n "2,17s/^# \{0,1\}//p" "$0"; exit 0 ;;
@@ -26,6 +27,7 @@ scale=${3:-1}
 [[ $scale =~ ^[1-9]$ ]] || { echo "dam_break: S must be a whole number 1-9, not '$scale'" >&2; exit 2; }
 cd "$VP_ROOT"
 labels=()
+bind=()  # mpirun's process binding: Open MPI's default unless the columns run side by side
 
 # column KIND N: the KIND (loose, dense) column at N cells per diameter, to rest or t = T.
 column() {
@@ -47,7 +49,7 @@ column() {
   local start=(-output_overwrite)
   if [ -e "$out/checkpoint_latest.h5" ]; then start=(-restart "$out/checkpoint_latest.h5"); fi
   echo "dam break $kind, d/dx $n ($grid cells), to rest or t = $t s -> $out (${start[*]})"
-  mpirun -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" "${tall[@]}" -time_final "$t" -output_dir "$out" \
+  mpirun "${bind[@]}" -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" "${tall[@]}" -time_final "$t" -output_dir "$out" \
     "${start[@]}" -monitor_every 200 -output_dt 0.1 -checkpoint_every 250 \
     -collapse_rest_speed 1e-4 -collapse_rest_window 0.5 | tee -a "$out.log"
   local stopped
@@ -60,8 +62,10 @@ if [ "${1:-8}" = grid ]; then
   scripts/plot_dam_break --out docs/validation --name dam_break_grid_8_12 "${labels[@]}"
 else
   n=${1:-8}
-  # One rank each: the two columns side by side (each column's console in its log only).
+  # One rank each: the two columns side by side (each column's console in its log only), unbound:
+  # Open MPI binds a lone rank to the first core, so two runs would share it.
   if [ "$NP" = 1 ]; then
+    bind=(--bind-to none)
     column loose "$n" >/dev/null & loose=$!
     column dense "$n" >/dev/null & dense=$!
     wait "$loose"; wait "$dense"  # a column that fails stops the script
