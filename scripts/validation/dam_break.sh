@@ -18,7 +18,7 @@
 # (Open MPI's binding, now off here); S 2 at d/dx 4, 0.56 s per step with a core to itself.
 set -euo pipefail
 case ${1:-8} in
-  -h|--help) sed -n "2,17s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  -h|--help) sed -n "2,18s/^# \{0,1\}//p" "$0"; exit 0 ;;
   grid|[1-9]|[1-9][0-9]) ;;
   *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
 esac
