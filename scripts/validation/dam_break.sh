@@ -13,12 +13,11 @@
 # the columns are prepared first when missing (scripts/prepare_columns --scale S, into output/).
 # usage (through scripts/validate): scripts/validate dam_break [N|grid [T [S]]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
-# second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; d/dx 4 on
-# one rank, the two columns side by side (NP=1), 0.4-0.5 s (7-8 minutes) when both shared one core
-# (Open MPI's binding, now off here); S 2 at d/dx 4, 0.56 s per step with a core to itself.
+# second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; with
+# NP=1 (side by side, a core each) S 2 at d/dx 4 about 0.56 s per step.
 set -euo pipefail
 case ${1:-8} in
-  -h|--help) sed -n "2,18s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  -h|--help) sed -n "2,17s/^# \{0,1\}//p" "$0"; exit 0 ;;
   grid|[1-9]|[1-9][0-9]) ;;
   *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
 esac
