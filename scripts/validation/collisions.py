@@ -53,11 +53,13 @@ from common import plt, root, ranks, vpsolve, harada as harada_bin, scratch, out
 reuse = "--reuse" in sys.argv
 res = int(sys.argv[sys.argv.index("--res") + 1]) if "--res" in sys.argv else 16
 CFL = float(sys.argv[sys.argv.index("--cfl") + 1]) if "--cfl" in sys.argv else 0.5  # the restitution runs' largest CFL
-RELEASE = int(sys.argv[sys.argv.index("--release") + 1]) if "--release" in sys.argv else 3  # restitution's release gap (d)
 E_DRY = 0.97
 HYDRO = "limit"  # -contact_hydro of the cases and of the studies that do not compare it (the default)
 STEEL, RHO_F, D3 = 7800.0, 935.0, 0.003
 U_RELEASE = 0.585  # m/s: the e(St) study's release speed (Gondret's St 152 impact speed)
+GAP_RELEASE = 3  # d above the floor: where the e(St) study releases at U_RELEASE (higher: settling spheres)
+RELEASE = int(sys.argv[sys.argv.index("--release") + 1]) if "--release" in sys.argv else GAP_RELEASE  # restitution's release gap (d)
+SETTLING = RELEASE > GAP_RELEASE
 
 
 def study_mu(st, d=D3, rho_p=STEEL):
@@ -164,7 +166,7 @@ def terminal_speed(rho_p, rho_f, mu, d, g=9.81):
     return u
 
 
-def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_p=STEEL, rho_f=RHO_F, release=3):
+def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_p=STEEL, rho_f=RHO_F, release=GAP_RELEASE):
     """Sphere of diameter d (steel in the cases' liquid unless rho_p, rho_f say otherwise) at nominal St
     (viscosity from St with u = 0.585 m/s) in a 6d x 6d x (release + 4)d box, released `release` d above
     the floor at 0.585 m/s (3 d) or, released higher, at its terminal speed (terminal_speed), so that it
@@ -172,7 +174,8 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     r = r or res
     a = d / 2
     mu = study_mu(st, d, rho_p)
-    u = U_RELEASE if release == 3 else terminal_speed(rho_p, rho_f, mu, d)
+    settling = release > GAP_RELEASE
+    u = terminal_speed(rho_p, rho_f, mu, d) if settling else U_RELEASE
     h = d / r
     n = 6 * r
     dt = cfl * h / u  # CFL at the release speed
@@ -180,11 +183,11 @@ def restitution_run(st, hydro, r=None, extra=(), d=D3, label=None, cfl=0.5, rho_
     tag = ("_plain" if PLAIN[0] in extra else "") + "".join(others).replace("-", "_")
     tag += "" if (rho_p, rho_f) == (STEEL, RHO_F) else "_rp%g_rf%g" % (rho_p, rho_f)
     tag += "" if cfl == default_cfl(st) else "_cfl%g" % cfl
-    tag += "" if release == 3 else "_h%g" % release
+    tag += "_h%g" % release if settling else ""
     out = os.path.join(scratch, "vp_col_%s" % (label or "e_st%g_%s%s_r%d_d%g" % (st, hydro, tag, r, d)))
     rows = run(out, "-grid_n", "%d,%d,%d" % (n, n, (release + 4) * r), "-grid_hi", "%g,%g,%g" % (6 * d, 6 * d, (release + 4) * d),
                "-particle_position", "%g,%g,%g" % (3 * d, 3 * d, (release + 0.5) * d), "-particle_radius", a, "-particle_velocity", "0,0,%g" % -u,
-               "-fluid_mu", mu, "-time_dt", dt, "-time_final", ((20 if st <= 20 else 12) + release - 3) * d / u + 20 * dt, "-dem_substeps", 200,
+               "-fluid_mu", mu, "-time_dt", dt, "-time_final", ((20 if st <= 20 else 12) + release - GAP_RELEASE) * d / u + 20 * dt, "-dem_substeps", 200,
                "-particle_density", rho_p, "-fluid_rho", rho_f,
                "-contact_hydro", hydro, "-health_overlap_max", 0.3, "-health_cfl_max", 1.5, *extra)
     u_in, u_out, touched = impact(rows, a)
@@ -256,7 +259,7 @@ def restitution():
             (HYDRO, PLAIN, "^", [40, 152, 500], steel))
     if "--cases-only" in sys.argv:  # the cases' set-up alone
         sets = sets[:1]
-    if RELEASE > 3:  # settling spheres: the cases' set-up, steel and glass in water
+    if SETTLING:  # settling spheres: the cases' set-up, steel and glass in water
         sets = (sets[0], (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)))
     if "--roughness" in sys.argv:  # the cases' set-up and the same with Gondret's reported roughness
         sets = (sets[0], (HYDRO, ROUGH_GONDRET, "D", ST_LIST, steel))
@@ -281,7 +284,7 @@ def restitution():
                         cases if hydro == HYDRO else "") + (", glass in water" if rho_p == GLASS else "")
         pts = []
         for st in st_list:
-            if RELEASE > 3 and st < 20:  # settling at St below 10: no rebound, as released at 3 d
+            if SETTLING and st < 20:  # settling at St below 10: no rebound, as released at 3 d
                 continue
             label = "e_st%g_rough_r%d" % (st, res) if extra == ROUGH_GONDRET else None
             r = restitution_run(st, hydro, extra=extra, label=label, cfl=study_cfl(st), rho_p=rho_p, rho_f=rho_f, release=RELEASE)
@@ -305,8 +308,8 @@ def restitution():
     ax.set_xlabel("St = rho_p u_in d / (9 mu)  (u_in at gap 1 d)")
     ax.set_ylabel("e / e_dry")
     ax.set_title("Restitution on a wall (steel in the cases' liquid%s), d/dx = %d%s" %
-                 (", glass in water" if WITHOUT or "--no-history" in sys.argv or "--models" in sys.argv or RELEASE > 3 else "", res,
-                  (", CFL %g" % CFL if CFL < 0.5 else "") + (", released %d d above at the terminal speed" % RELEASE if RELEASE > 3 else "")), fontsize=9)
+                 (", glass in water" if WITHOUT or "--no-history" in sys.argv or "--models" in sys.argv or SETTLING else "", res,
+                  (", CFL %g" % CFL if CFL < 0.5 else "") + (", released %d d above at the terminal speed" % RELEASE if SETTLING else "")), fontsize=9)
     print("restitution: -contact_hydro %s: %s" % (HYDRO, "all in the band (St 20-1000)" if not failures else
                                                  "outside the band at nominal St %s" % failures), flush=True)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
@@ -317,7 +320,7 @@ def restitution():
             "restitution_stokes.png")
     if CFL < 0.5:
         name = name.replace(".png", "_cfl%g.png" % CFL)
-    if RELEASE != 3:
+    if SETTLING:
         name = name.replace(".png", "_h%d.png" % RELEASE)
     fig.savefig(os.path.join(outdir, name), dpi=120)
 
