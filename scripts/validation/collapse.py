@@ -13,7 +13,8 @@ the main case's start against the contact stiffness.
       incline at 21-24 degrees (DEM only; 10 d x 6 d periodic, about 16 d deep, a base of fixed
       spheres; 3 s each): the bulk's solid fraction phi against its inertial number
       I = gamma_dot d / sqrt(P / rho_p) from 1.5 s on, extrapolated to I = 0 (GDR MiDi 2004). Table,
-      docs/validation/phi_c.png.
+      docs/validation/phi_c.png. With --spread S the flowing spheres' radii are uniform in
+      a (1 - S) .. a (1 + S) (the columns' -particles_radius_spread): docs/validation/phi_c_spread.png.
   coupling: the shipped loose column to t = 0.3 s at fluid steps 1e-3, 5e-4 and 2.5e-4 s and implicit
       drags k 1, 10 and 30 (-dem_implicit_drag; the DEM sub-step kept at 6.7e-6 s; ten runs), the
       smallest step with k 3 and 30 as the reference: the front and the base excess pore pressure. Table,
@@ -22,7 +23,7 @@ the main case's start against the contact stiffness.
       contact times t_c 5e-4, 2.5e-4 and 1.25e-4 s (normal stiffness 1x, 4x, 16x; DEM sub-step
       min(6.7e-6 s, t_c / 37.5)): the base excess pore pressure's start-up dip and the front. Table,
       docs/validation/dam_break_stiffness.png.
-usage: collapse.py [permeability|phic|coupling|stiffness] [--res 4,6,8,12] [--reuse]"""
+usage: collapse.py [permeability|phic|coupling|stiffness] [--res 4,6,8,12] [--spread S] [--reuse]"""
 import glob, os, subprocess, sys
 import numpy as np
 import h5py
@@ -32,9 +33,12 @@ from common import plt, root, ranks, vpsolve, scratch, outdir, chosen_study
 column_phi = SourceFileLoader("column_phi", os.path.join(root, "scripts", "column_phi")).load_module()
 
 STUDIES = ("permeability", "phic", "coupling", "stiffness")
-what = chosen_study(__doc__, STUDIES, valued=("--res",))
+what = chosen_study(__doc__, STUDIES, valued=("--res", "--spread"))
 reuse = "--reuse" in sys.argv
 res_list = [int(r) for r in sys.argv[sys.argv.index("--res") + 1].split(",")] if "--res" in sys.argv else [4, 6, 8, 12]
+spread = float(sys.argv[sys.argv.index("--spread") + 1]) if "--spread" in sys.argv else 0.0
+if not 0 <= spread <= 0.5:
+    sys.exit("--spread must be in [0, 0.5] (the radii's relative half-width), not %g" % spread)
 
 D = 1e-3            # sphere diameter of the columns (m)
 MU, RHO = 0.1, 1000.0
@@ -140,7 +144,8 @@ ANGLES = (21, 22, 23, 24)
 
 def chute_particles(path, seed=1):
     """A base of fixed spheres resting on the floor (random, non-overlapping, about 0.5 of the floor
-    covered) and a loose lattice of free spheres above it, 19 layers (about 16 d when settled)."""
+    covered) and a loose lattice of free spheres above it, 19 layers (about 16 d when settled); the
+    free spheres' radii uniform in a (1 - spread) .. a (1 + spread)."""
     rng = np.random.default_rng(seed)
     a = D / 2
     base = []
@@ -156,7 +161,7 @@ def chute_particles(path, seed=1):
         if ok:
             base.append(p)
     rows = [(i, p[0], p[1], a, 1) for i, p in enumerate(base)]
-    s = 1.05 * D
+    s = 1.05 * D * (1 + spread)
     nx, ny = int(CHUTE[0] / s), int(CHUTE[1] / s)
     for k in range(19):
         for j in range(ny):
@@ -166,11 +171,12 @@ def chute_particles(path, seed=1):
         f.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz,fixed\n")
         for r in rows:
             z = a if r[4] else r[3]
-            f.write("%d,%.9g,%.9g,%.9g,%g,2500,0,0,0,0,0,0,%d\n" % (r[0], r[1], r[2], z, a, r[4]))
+            radius = a if r[4] or not spread else a * (1 + spread * rng.uniform(-1, 1))
+            f.write("%d,%.9g,%.9g,%.9g,%.9g,2500,0,0,0,0,0,0,%d\n" % (r[0], r[1], r[2], z, radius, r[4]))
 
 
 def chute(angle):
-    out = os.path.join(scratch, "vp_val_phic_%d" % angle)
+    out = os.path.join(scratch, "vp_val_phic_%d%s" % (angle, "_spread%g" % spread if spread else ""))
     if not (reuse and glob.glob(os.path.join(out, "particles_*.h5"))):
         os.makedirs(out, exist_ok=True)
         chute_particles(os.path.join(out, "start.csv"))
@@ -229,7 +235,7 @@ def phic():
         ax.plot(m["I"], m["phi"], ".", label="incline %d deg" % m["angle"])
     ii = np.linspace(0, I.max() * 1.1, 20)
     ax.plot(ii, phi_c + b * ii, "k--", label="phi_c %.3f %+.2f I" % (phi_c, b))
-    for kind, c in zip(COLUMNS, ("C4", "C5")):
+    for kind, c in zip(COLUMNS if not spread else (), ("C4", "C5")):  # the shipped columns are monodisperse
         ph = column_interior(*load_column(kind))[2]
         print("column %s: phi %.3f, phi - phi_c = %+.3f" % (kind, ph, ph - phi_c))
         ax.axhline(ph, color=c, ls=":", label="shipped %s column" % kind)
@@ -237,7 +243,7 @@ def phic():
     ax.set_ylabel("solid fraction")
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "phi_c.png"), dpi=120)
+    fig.savefig(os.path.join(outdir, "phi_c_spread.png" if spread else "phi_c.png"), dpi=120)
 
 
 def prepared_column(tc, out):

@@ -11,6 +11,8 @@
 # S (a whole number, default 1): the height study, columns S times as long and as high (about 15 S
 # diameters high, S^2 times the spheres) in a tank S times as long and high, the slab as before;
 # the columns are prepared first when missing (scripts/prepare_columns --scale S, into output/).
+# SPREAD=R (environment): slightly polydisperse columns instead (radii uniform in a (1 - R) ..
+# a (1 + R); scripts/prepare_columns --spread R, prepared when missing), outputs suffixed _spreadR.
 # usage (through scripts/validate): scripts/validate dam_break [N|grid [T [S]]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
 # second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; with
@@ -24,6 +26,9 @@ esac
 t=${2:-30}
 scale=${3:-1}
 [[ $scale =~ ^[1-9]$ ]] || { echo "dam_break: S must be a whole number 1-9, not '$scale'" >&2; exit 2; }
+spread=${SPREAD:-0}
+awk -v r="$spread" 'BEGIN { exit !(r + 0 == r && r >= 0 && r <= 0.5) }' ||
+  { echo "dam_break: SPREAD must be a number in [0, 0.5], not '$spread'" >&2; exit 2; }
 cd "$VP_ROOT"
 labels=()
 bind=()  # mpirun's process binding: Open MPI's default unless the columns run side by side
@@ -33,16 +38,24 @@ column() {
   local kind=$1 n=$2 case_file=cases/dam_break.opts
   [ "$kind" = dense ] && case_file=cases/dam_break_dense.opts
   local grid="$((64 * n * scale)),$((4 * n)),$((20 * n * scale))" out=output/validate_dam_break_${kind}_d$n
-  local tall=()
+  local tall=() file=""
   if [ "$scale" != 1 ]; then
     out=${out}_x$scale
-    [ -e "output/column_${kind}_x$scale.csv" ] || scripts/prepare_columns --scale "$scale" "$kind"
+    file=output/column_${kind}_x$scale.csv
     local at=(0.0095 0.062 0.019 0.064 0.020)  # the probes' x, x, z and the tank's length and height (m)
     for i in "${!at[@]}"; do at[$i]=$(awk -v v="${at[$i]}" -v s="$scale" 'BEGIN { print v * s }'); done
-    tall=(-particles_file "output/column_${kind}_x$scale.csv" -grid_hi "${at[3]},0.004,${at[4]}"
-          -probe "${at[0]},0.002,0.00025,${at[1]},0.002,${at[2]}")
+    tall=(-grid_hi "${at[3]},0.004,${at[4]}" -probe "${at[0]},0.002,0.00025,${at[1]},0.002,${at[2]}")
   fi
-  labels+=("${kind}_d$n$([ "$scale" = 1 ] || echo "_x$scale")=$out")
+  if [ "$spread" != 0 ]; then
+    file=output/column_${kind}$([ "$scale" = 1 ] || echo "_x$scale")_spread$spread.csv
+    out=${out}_spread$spread
+  fi
+  if [ -n "$file" ]; then
+    [ -e "$file" ] || scripts/prepare_columns $([ "$scale" = 1 ] || echo "--scale $scale") \
+      $([ "$spread" = 0 ] || echo "--spread $spread") "$kind"
+    tall+=(-particles_file "$file")
+  fi
+  labels+=("$(basename "$out" | sed 's/^validate_dam_break_//')=$out")
   # A column at rest is done: a restart would begin a new rest window and run on for 0.5 s.
   if [ -e "$out/at_rest" ]; then echo "dam break $kind, d/dx $n: at rest ($(cat "$out/at_rest")); delete $out to run it again"; return; fi
   local start=(-output_overwrite)
@@ -68,11 +81,11 @@ else
     column loose "$n" >/dev/null & loose=$!
     column dense "$n" >/dev/null & dense=$!
     wait "$loose"; wait "$dense"  # a column that fails stops the script
-    tag=$([ "$scale" = 1 ] || echo "_x$scale")
+    tag=$([ "$scale" = 1 ] || echo "_x$scale")$([ "$spread" = 0 ] || echo "_spread$spread")
     labels=("loose_d$n$tag=output/validate_dam_break_loose_d$n$tag" "dense_d$n$tag=output/validate_dam_break_dense_d$n$tag")
   else
     column loose "$n"
     column dense "$n"
   fi
-  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$([ "$scale" = 1 ] || echo "_x$scale")" "${labels[@]}"
+  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$([ "$scale" = 1 ] || echo "_x$scale")$([ "$spread" = 0 ] || echo "_spread$spread")" "${labels[@]}"
 fi

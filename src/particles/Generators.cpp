@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <unordered_set>
@@ -247,24 +248,31 @@ std::vector<ParticleRecord> roughWallParticles(double radius, double density, co
 
 std::vector<ParticleRecord> randomParticles(const RandomInput& in, double density)
 {
-  const double a = in.radius;
+  const double a = in.radius, s = in.radiusSpread, aMax = a * (1 + s);
   Vec3 size = in.hi - in.lo;
   const double volume = size.x * size.y * size.z;
-  const auto target = static_cast<std::size_t>(std::llround(in.volumeFraction * volume / (4.0 / 3.0 * M_PI * a * a * a)));
-  // Random sequential addition on a grid of cells of one diameter: candidates overlap only
+  // Radii uniform in [a (1 - s), a (1 + s)] have a mean cube of a^3 (1 + s^2).
+  const auto target = static_cast<std::size_t>(std::llround(in.volumeFraction * volume / (4.0 / 3.0 * M_PI * a * a * a * (1 + s * s))));
+  std::mt19937_64 rng(in.seed);
+  std::vector<double> radius(target, a);
+  if (s > 0) {  // drawn first and placed largest first, so that the placement does not favour the small ones
+    for (double& r : radius) r = a * (1 + s * (2 * uniform(rng) - 1));
+    std::sort(radius.begin(), radius.end(), std::greater<>());
+  }
+  // Random sequential addition on a grid of cells of the largest diameter: candidates overlap only
   // spheres in the 27 surrounding cells.
   int n[3];
-  for (int d = 0; d < 3; ++d) n[d] = std::max(1, static_cast<int>(size[d] / (2 * a)));
+  for (int d = 0; d < 3; ++d) n[d] = std::max(1, static_cast<int>(size[d] / (2 * aMax)));
   std::vector<std::vector<std::size_t>> cell(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
   auto cellOf = [&](const Vec3& p, int d) {
     return std::min(n[d] - 1, std::max(0, static_cast<int>((p[d] - in.lo[d]) / size[d] * n[d])));
   };
-  std::mt19937_64 rng(in.seed);
   std::vector<ParticleRecord> out;
   const std::size_t maxAttempts = 2000 * target + 1000;
   for (std::size_t attempt = 0; attempt < maxAttempts && out.size() < target; ++attempt) {
+    const double r = radius[out.size()];
     Vec3 p;
-    for (int d = 0; d < 3; ++d) p[d] = in.lo[d] + a + (size[d] - 2 * a) * uniform(rng);
+    for (int d = 0; d < 3; ++d) p[d] = in.lo[d] + r + (size[d] - 2 * r) * uniform(rng);
     const int c[3] = {cellOf(p, 0), cellOf(p, 1), cellOf(p, 2)};
     bool free = true;
     for (int dz = -1; dz <= 1 && free; ++dz)
@@ -273,16 +281,16 @@ std::vector<ParticleRecord> randomParticles(const RandomInput& in, double densit
           const int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
           if (x < 0 || y < 0 || z < 0 || x >= n[0] || y >= n[1] || z >= n[2]) continue;
           for (std::size_t j : cell[x + n[0] * (y + static_cast<std::size_t>(n[1]) * z)])
-            if (norm(out[j].x - p) < 2 * a) { free = false; break; }
+            if (norm(out[j].x - p) < r + out[j].radius) { free = false; break; }
         }
     if (!free) continue;
     cell[c[0] + n[0] * (c[1] + static_cast<std::size_t>(n[1]) * c[2])].push_back(out.size());
-    ParticleRecord r;
-    r.id = static_cast<std::int64_t>(out.size());
-    r.radius = a;
-    r.density = density;
-    r.x = p;
-    out.push_back(r);
+    ParticleRecord rec;
+    rec.id = static_cast<std::int64_t>(out.size());
+    rec.radius = r;
+    rec.density = density;
+    rec.x = p;
+    out.push_back(rec);
   }
   if (out.size() < target)
     failOption("-particles_random", "reached only " + std::to_string(out.size()) + " of " + std::to_string(target) +

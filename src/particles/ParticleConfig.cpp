@@ -67,6 +67,8 @@ ParticleConfig ParticleConfig::read()
       in.seed = seed(v[8], name);
     };
     boxFraction("-particles_random", "Random packing x0,y0,z0,x1,y1,z1,volume_fraction,radius(m),seed", c.random);
+    c.random.radiusSpread = o.real("-particles_radius_spread", 0, "With -particles_random: radii uniform in "
+                                                                 "radius (1 - s) .. radius (1 + s) (0: monodisperse)");
     boxFraction("-particles_packed", "Dense random packing without overlaps, grown in the box x0,y0,z0,x1,y1,z1 to "
                                      "volume_fraction (up to about 0.6), radius(m), seed", c.packed);
     c.packed.sizeRatio = o.real("-particles_size_ratio", 1, "With -particles_packed: 1 monodisperse; > 1 bidisperse, equal "
@@ -153,12 +155,16 @@ void ParticleConfig::validate() const
     for (int d = 0; d < 3; ++d)
       if (!(lattice.hi[d] > lattice.lo[d])) failOption("-particles_lattice", "box upper corner must exceed its lower corner");
   }
+  if (!(random.radiusSpread >= 0 && random.radiusSpread <= 0.5))
+    failOption("-particles_radius_spread", "must be in [0, 0.5] (0: monodisperse), got " + formatNumber(random.radiusSpread));
+  if (random.radiusSpread != 0 && !random.set) failOption("-particles_radius_spread", "applies to -particles_random only");
   if (random.set) {
     positive(random.radius, "-particles_random");
     if (!(random.volumeFraction > 0 && random.volumeFraction <= 0.35))
       failOption("-particles_random", "volume fraction must be in (0, 0.35] (random sequential addition), got " + formatNumber(random.volumeFraction));
     for (int d = 0; d < 3; ++d)
-      if (!(random.hi[d] - random.lo[d] > 2 * random.radius)) failOption("-particles_random", "box must be wider than a particle diameter along every axis");
+      if (!(random.hi[d] - random.lo[d] > 2 * random.radius * (1 + random.radiusSpread)))
+        failOption("-particles_random", "box must be wider than the largest particle diameter along every axis");
   }
   if (packed.set) {
     positive(packed.radius, "-particles_packed");

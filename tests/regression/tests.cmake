@@ -472,6 +472,10 @@ vp_bad_input(packed_fraction 1 "option -particles_packed: volume fraction must b
              -options_file ${VP_CASES}/shear_suspension.opts -particles_packed 0,0,0,0.008,0.008,0.016,0.7,5e-4,1)
 vp_bad_input(size_ratio_alone 1 "option -particles_size_ratio: applies to -particles_packed only"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particles_size_ratio 1.4)
+vp_bad_input(radius_spread_range 1 "option -particles_radius_spread: must be in \\[0, 0.5\\] \\(0: monodisperse\\), got 0.7"
+             -options_file ${VP_CASES}/prepare_column.opts -particles_radius_spread 0.7)
+vp_bad_input(radius_spread_alone 1 "option -particles_radius_spread: applies to -particles_random only"
+             -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particles_radius_spread 0.1)
 vp_bad_input(contact_critical_load 1 "option -contact_critical_load: must be >= 0 \\(N; 0: friction on every contact\\), got -1"
              -contact_critical_load -1)
 vp_bad_input(lub_integration_without_model 1 "option -lub_integration: implicit integrates the lubrication's squeeze: it needs -lub_model blcm or llcm"

@@ -71,6 +71,36 @@ TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by s
   CHECK_THROWS_WITH(randomParticles(in, 2500), Catch::Contains("-particles_random") && Catch::Contains("lower the volume fraction"));
 }
 
+TEST_CASE("Random packing with a radius spread: radii uniform in the band, the volume fraction, no overlap", "[dem]")
+{
+  RandomInput in;
+  in.set = true;
+  in.lo = {0, 0, 0};
+  in.hi = {0.05, 0.05, 0.05};
+  in.volumeFraction = 0.25;
+  in.radius = 0.002;
+  in.seed = 9;
+  in.radiusSpread = 0.2;
+  const auto p = randomParticles(in, 2500);
+  double solid = 0, lo = HUGE_VAL, hi = 0, below = 0;
+  for (const auto& r : p) {
+    solid += 4.0 / 3.0 * M_PI * std::pow(r.radius, 3);
+    lo = std::min(lo, r.radius);
+    hi = std::max(hi, r.radius);
+    below += r.radius < in.radius;
+    for (int d = 0; d < 3; ++d) CHECK((r.x[d] >= r.radius && r.x[d] <= 0.05 - r.radius));
+  }
+  CHECK(p.size() > 400);
+  CHECK(std::fabs(solid / 1.25e-4 - 0.25) < 0.005);  // the mean cube a^3 (1 + s^2) sets the count
+  CHECK((lo >= 0.0016 && lo < 0.00162 && hi <= 0.0024 && hi > 0.00238));
+  CHECK(std::fabs(below / p.size() - 0.5) < 0.08);  // uniform: half below the nominal radius
+  CHECK(minDistanceRatio(p) >= 1);
+  CHECK(p.front().radius >= p.back().radius);  // placed largest first
+  in.radiusSpread = 0;  // no spread: the monodisperse packing of the same seed
+  const auto mono = randomParticles(in, 2500);
+  for (const auto& r : mono) CHECK(r.radius == in.radius);
+}
+
 TEST_CASE("Generated spheroids: a lattice's and random ones, aligned or isotropic, at the volume fraction, apart", "[dem][shape]")
 {
   Config c = boxConfig({0, 0, 0}, {0.05, 0.05, 0.05}, {4, 4, 4});

@@ -22,12 +22,14 @@ struct LatticeInput {
 };
 
 // -particles_random x0,y0,z0,x1,y1,z1,volume_fraction,radius,seed: random sequential addition of
-// non-overlapping spheres (centres inside the box, spheres inside it) up to a volume fraction.
+// non-overlapping spheres (centres inside the box, spheres inside it) up to a volume fraction;
+// with -particles_radius_spread s the radii are uniform in [radius (1 - s), radius (1 + s)].
 struct RandomInput {
   bool set = false;
   Vec3 lo, hi;
   double volumeFraction = 0, radius = 0;
   std::uint64_t seed = 0;
+  double radiusSpread = 0;
 };
 
 // -particles_packed (the same nine values) and -particles_size_ratio (particles/Packing.hpp).
