@@ -239,6 +239,8 @@ def phic():
         ph = column_interior(*load_column(kind))[2]
         print("column %s: phi %.3f, phi - phi_c = %+.3f" % (kind, ph, ph - phi_c))
         ax.axhline(ph, color=c, ls=":", label="shipped %s column" % kind)
+    if spread:
+        ax.set_title("radii uniform in a (1 - %g) .. a (1 + %g)" % (spread, spread), fontsize=9)
     ax.set_xlabel("inertial number I")
     ax.set_ylabel("solid fraction")
     ax.legend(fontsize=7)
