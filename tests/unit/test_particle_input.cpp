@@ -27,6 +27,19 @@ double minDistanceRatio(const std::vector<ParticleRecord>& p)  // min |x_i - x_j
 // Under the test's working folder (the build tree).
 std::string tempPath(const char* name) { return "scratch_particle_input_" + std::to_string(getpid()) + "_" + name; }
 
+// A 5 cm box filled to 0.25 with spheres of 2 mm radius (seed 9).
+RandomInput randomBox()
+{
+  RandomInput in;
+  in.set = true;
+  in.lo = {0, 0, 0};
+  in.hi = {0.05, 0.05, 0.05};
+  in.volumeFraction = 0.25;
+  in.radius = 0.002;
+  in.seed = 9;
+  return in;
+}
+
 } // namespace
 
 TEST_CASE("Lattice generator: count, no overlap, inside the box, reproducible by seed", "[dem]")
@@ -52,13 +65,7 @@ TEST_CASE("Lattice generator: count, no overlap, inside the box, reproducible by
 
 TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by seed", "[dem]")
 {
-  RandomInput in;
-  in.set = true;
-  in.lo = {0, 0, 0};
-  in.hi = {0.05, 0.05, 0.05};
-  in.volumeFraction = 0.25;
-  in.radius = 0.002;
-  in.seed = 9;
+  RandomInput in = randomBox();
   const auto p = randomParticles(in, 2500);
   const double v = 4.0 / 3.0 * M_PI * std::pow(in.radius, 3);
   CHECK(std::fabs(p.size() * v / 1.25e-4 - 0.25) < v / 1.25e-4);
@@ -73,13 +80,7 @@ TEST_CASE("Random packing: target volume fraction, no overlap, reproducible by s
 
 TEST_CASE("Random packing with a radius spread: radii uniform in the band, the volume fraction, no overlap", "[dem]")
 {
-  RandomInput in;
-  in.set = true;
-  in.lo = {0, 0, 0};
-  in.hi = {0.05, 0.05, 0.05};
-  in.volumeFraction = 0.25;
-  in.radius = 0.002;
-  in.seed = 9;
+  RandomInput in = randomBox();
   in.radiusSpread = 0.2;
   const auto p = randomParticles(in, 2500);
   double solid = 0, lo = HUGE_VAL, hi = 0, below = 0;
