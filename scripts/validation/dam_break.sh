@@ -87,5 +87,12 @@ else
     column loose "$n"
     column dense "$n"
   fi
+  if [ "$spread" != 0 ]; then  # beside the monodisperse columns of the same grid and height, when run
+    mono=output/validate_dam_break_%s_d$n$([ "$scale" = 1 ] || echo "_x$scale")
+    for kind in dense loose; do
+      # shellcheck disable=SC2059
+      dir=$(printf "$mono" "$kind"); [ -d "$dir" ] && labels=("$(basename "$dir" | sed 's/^validate_dam_break_//')=$dir" "${labels[@]}")
+    done
+  fi
   scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$([ "$scale" = 1 ] || echo "_x$scale")$([ "$spread" = 0 ] || echo "_spread$spread")" "${labels[@]}"
 fi
