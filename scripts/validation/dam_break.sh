@@ -29,6 +29,9 @@ scale=${3:-1}
 spread=${SPREAD:-0}
 awk -v r="$spread" 'BEGIN { exit !(r + 0 == r && r >= 0 && r <= 0.5) }' ||
   { echo "dam_break: SPREAD must be a number in [0, 0.5], not '$spread'" >&2; exit 2; }
+# The name suffixes of the height and the polydispersity studies (empty for the shipped columns).
+tall_tag=$([ "$scale" = 1 ] || echo "_x$scale")
+spread_tag=$([ "$spread" = 0 ] || echo "_spread$spread")
 cd "$VP_ROOT"
 labels=()
 bind=()  # mpirun's process binding: Open MPI's default unless the columns run side by side
@@ -47,7 +50,7 @@ column() {
     tall=(-grid_hi "${at[3]},0.004,${at[4]}" -probe "${at[0]},0.002,0.00025,${at[1]},0.002,${at[2]}")
   fi
   if [ "$spread" != 0 ]; then
-    file=output/column_${kind}$([ "$scale" = 1 ] || echo "_x$scale")_spread$spread.csv
+    file=output/column_${kind}${tall_tag}${spread_tag}.csv
     out=${out}_spread$spread
   fi
   if [ -n "$file" ]; then
@@ -81,18 +84,17 @@ else
     column loose "$n" >/dev/null & loose=$!
     column dense "$n" >/dev/null & dense=$!
     wait "$loose"; wait "$dense"  # a column that fails stops the script
-    tag=$([ "$scale" = 1 ] || echo "_x$scale")$([ "$spread" = 0 ] || echo "_spread$spread")
+    tag=$tall_tag$spread_tag
     labels=("loose_d$n$tag=output/validate_dam_break_loose_d$n$tag" "dense_d$n$tag=output/validate_dam_break_dense_d$n$tag")
   else
     column loose "$n"
     column dense "$n"
   fi
   if [ "$spread" != 0 ]; then  # beside the monodisperse columns of the same grid and height, when run
-    mono=output/validate_dam_break_%s_d$n$([ "$scale" = 1 ] || echo "_x$scale")
     for kind in dense loose; do
-      # shellcheck disable=SC2059
-      dir=$(printf "$mono" "$kind"); [ -d "$dir" ] && labels=("$(basename "$dir" | sed 's/^validate_dam_break_//')=$dir" "${labels[@]}")
+      dir=output/validate_dam_break_${kind}_d$n$tall_tag
+      [ -d "$dir" ] && labels=("${kind}_d$n$tall_tag=$dir" "${labels[@]}")
     done
   fi
-  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$([ "$scale" = 1 ] || echo "_x$scale")$([ "$spread" = 0 ] || echo "_spread$spread")" "${labels[@]}"
+  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$tall_tag$spread_tag" "${labels[@]}"
 fi
