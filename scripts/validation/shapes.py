@@ -4,8 +4,9 @@
         of the sphere of equal volume in a periodic box, against Oberbeck's exact values, the box
         removed with two box sizes; the sphere, whose periodic drag is known (Hasimoto), measures
         the error the runs share (about 30 minutes on 2 cores at the default --res 12)
-  jeffery: cases/jeffery_orbit.opts, a prolate spheroid (aspect 2) in shear at Re_p 0.01: the
-        axis angle against Jeffery's orbit and its period 2 pi (r + 1/r) / gamma (about 10 minutes)
+  jeffery: cases/jeffery_orbit.opts, prolate spheroids (aspect 2, and 3 in a wider box) in shear at
+        Re_p 0.01: the axis angle against Jeffery's orbit and its period 2 pi (r + 1/r) / gamma (about
+        5 minutes)
   bounce: a spheroid (aspect 2, tilted 30 degrees) driven onto a wall as in cases/restitution.opts
         (steel in oil, St about 150 on the equal-volume diameter, d/dx 8 on 2a): dry, in the liquid
         without lubrication, and with the LLCM: rebound and spin (about 3 minutes)
@@ -133,49 +134,64 @@ def axis_angle(row):
     return math.atan2(1 - 2 * (x * x + y * y), 2 * (x * z + w * y))
 
 
-def jeffery():
-    out = os.path.join(scratch, "vp_val_shape_jeffery")
+# Aspect 3 is a longer body: the case's box and walls 1.25 times wider, the same cells and shear rate.
+JEFFERY_RUNS = ((2, []), (3, ["-grid_hi", "1.5,1.0,2.0", "-grid_n", "60,40,80", "-bc_zlo_velocity", "-1,0,0",
+                              "-bc_zhi_velocity", "1,0,0", "-particle_position", "0.75,0.5,1.0", "-particle_aspect", "3",
+                              "-time_final", "22"]))
+
+
+def jeffery_turn(aspect, extra):
+    """The axis angle turned (rad, unwrapped, positive in the sense of the shear) against gamma t."""
+    out = os.path.join(scratch, "vp_val_shape_jeffery" + ("" if aspect == 2 else "_r%d" % aspect))
     case = os.path.join(root, "cases", "jeffery_orbit.opts")
     if not (reuse and os.path.exists(os.path.join(out, "particle_0.csv"))):
         subprocess.run(["mpirun", "-n", ranks, vpsolve, "-options_file", case, "-output_dir", out, "-output_overwrite",
-                        "-monitor_every", "0", "-output_dt", "0"], check=True, stdout=subprocess.DEVNULL)
+                        "-monitor_every", "0", "-output_dt", "0"] + extra, check=True, stdout=subprocess.DEVNULL)
     rows = list(csv.DictReader(open(os.path.join(out, "particle_0.csv"))))
-    t = [float(r["time"]) for r in rows]
+    t = [float(r["time"]) for r in rows]  # gamma = 1 in both boxes
     turned, last = [0.0], axis_angle(rows[0])
-    for r in rows[1:]:  # unwrapped, counted positive in the sense of the shear
+    for r in rows[1:]:
         a = axis_angle(r)
         d = (last - a + math.pi) % (2 * math.pi) - math.pi
         turned.append(turned[-1] + d)
         last = a
-    r_, gamma = 2.0, 1.0
-    T = 2 * math.pi * (r_ + 1 / r_) / gamma
+    return t, turned
 
-    def crossing(level):
-        for k in range(1, len(t)):
-            if turned[k - 1] < level <= turned[k]:
-                return t[k - 1] + (level - turned[k - 1]) / (turned[k] - turned[k - 1]) * (t[k] - t[k - 1])
-        return None
 
-    half, full = crossing(math.pi), crossing(2 * math.pi)
-    for name, tc, n in (("half", half, 0.5), ("full", full, 1.0)):
-        if tc is not None:
-            print("jeffery: %s turn at t = %.3f: period %.3f vs Jeffery %.3f (%+.2f %%)" % (name, tc, tc / n, T, 100 * (tc / n / T - 1)),
-                  flush=True)
-    exact = []
-    for tt in t:  # Jeffery: tan(angle) = tan(2 pi t / T) / r, unwrapped
-        ph = 2 * math.pi * tt / T
-        k = math.floor(ph / math.pi + 0.5)
-        exact.append(math.atan(math.tan(ph) / r_) + k * math.pi)
+def jeffery():
     fig, ax = plt.subplots(figsize=(5.5, 3.8))
-    ax.plot([x * gamma for x in t], [math.degrees(a) for a in exact], "k--", label="Jeffery (1922), r = 2")
-    ax.plot([x * gamma for x in t], [math.degrees(a) for a in turned], label="vpsolve, Re_p 0.01, d_v/dx 10")
+    periods = {}
+    for r_, extra in JEFFERY_RUNS:
+        t, turned = jeffery_turn(r_, extra)
+        T = 2 * math.pi * (r_ + 1 / r_)
+
+        def crossing(level):
+            for k in range(1, len(t)):
+                if turned[k - 1] < level <= turned[k]:
+                    return t[k - 1] + (level - turned[k - 1]) / (turned[k] - turned[k - 1]) * (t[k] - t[k - 1])
+            return None
+
+        half, full = crossing(math.pi), crossing(2 * math.pi)
+        for name, tc, n in (("half", half, 0.5), ("full", full, 1.0)):
+            if tc is not None:
+                print("jeffery: aspect %d, %s turn at gamma t = %.3f: period %.3f vs Jeffery %.3f (%+.2f %%)" %
+                      (r_, name, tc, tc / n, T, 100 * (tc / n / T - 1)), flush=True)
+        exact = []
+        for tt in t:  # Jeffery: tan(angle) = tan(2 pi t / T) / r, unwrapped
+            ph = 2 * math.pi * tt / T
+            k = math.floor(ph / math.pi + 0.5)
+            exact.append(math.atan(math.tan(ph) / r_) + k * math.pi)
+        line, = ax.plot(t, [math.degrees(a) for a in turned],
+                        label="aspect %d: period %s" % (r_, "%.2f (Jeffery %.2f)" % (full, T) if full else "not reached"))
+        ax.plot(t, [math.degrees(a) for a in exact], "--", color=line.get_color(), lw=0.9)
+        periods[r_] = (full, T)
     ax.set_xlabel("gamma t")
     ax.set_ylabel("axis angle from the flow direction (deg)")
-    ax.set_title("Prolate spheroid in shear: period %s" % ("%.2f (Jeffery %.2f)" % (full, T) if full else "not reached"), fontsize=10)
+    ax.set_title("Prolate spheroids in shear, Re_p 0.01 (dashed: Jeffery 1922)", fontsize=10)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "jeffery_orbit.png"), dpi=120)
-    return full, T
+    return periods
 
 
 def time_panels(fig, axes, ylabels, title, name):
