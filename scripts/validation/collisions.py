@@ -16,7 +16,7 @@
                resolved force alone and with LLCM/BLCM against the exact values
   replacement: -lub_coupling add against replace at d/dx 12 (normal, the pair at three positions of its
                gap on the grid, parallel, rotation) against the exact values
-  confinement: the normal mode's resolved force in boxes of 4 (the study's) to 12 d
+  confinement: the normal mode's and the pair's resolved force in boxes of 4 (the study's) to 12 d
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
   pair:        two spheres colliding head-on: e with and without the departure, and against the mask's
@@ -811,7 +811,7 @@ def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0
     lub "replace": the resolved run with -lub_coupling replace from `cells` (patches of depth `patch`
     radii; None: the default), the resolved force plus the LLCM's together.
     `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre).
-    `box`: the cubic box's side in d (the normal mode's resolved runs; 4 elsewhere)."""
+    `box`: the cubic box's side in d (the resolved runs; 4 elsewhere)."""
     n = box * r
     bc, one, speed = calib_geometry(mode, eps, box)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
@@ -918,12 +918,16 @@ def calibration():
 
 
 def confinement():
-    """The normal mode's resolved force in cubic boxes of 4 (the study's) to 12 d: what the box adds."""
-    for r, boxes, gaps in ((8, [4, 6, 8, 12], [0.2, 0.5, 1.0]), (12, [4, 8], [0.05, 0.1, 0.2, 0.5, 1.0])):
+    """The resolved force in cubic boxes of 4 (the study's) to 12 d: what the box adds. Normal to a wall
+    (walls at z = 0 and the box's side), and the pair (periodic in all three: its images), the pair's
+    gap centred on a face plane."""
+    for mode, exact, r, boxes, gaps in (("normal", brenner, 8, [4, 6, 8, 12], [0.2, 0.5, 1.0]),
+                                        ("normal", brenner, 12, [4, 8], [0.05, 0.1, 0.2, 0.5, 1.0]),
+                                        ("pair", TWO.get, 12, [4, 6, 8], [0.2, 0.5, 1.0])):
         for box in boxes:
-            errs = ["%+.1f" % (100 * (calib_run("normal", e, r, box=box) / brenner(e) - 1)) for e in gaps]
-            print("confinement: normal d/dx %2d box %2d d: error %% at eps %s: %s" %
-                  (r, box, "/".join("%g" % e for e in gaps), " / ".join(errs)), flush=True)
+            errs = ["%+.1f" % (100 * (calib_run(mode, e, r, box=box) / exact(e) - 1)) for e in gaps]
+            print("confinement: %-6s d/dx %2d box %2d d: error %% at eps %s: %s" %
+                  (mode, r, box, "/".join("%g" % e for e in gaps), " / ".join(errs)), flush=True)
 
 
 def pair_position_figure(by_gap):
@@ -994,6 +998,13 @@ def replacement():
                 for al in (0.0, 0.25, 0.5)]
         print("replacement: patch depth %g a at eps 0.1, d/dx %d: normal %+.1f %%, pair %s %%" %
               (patch, r, wall, " / ".join("%+.1f" % y for y in pair)), flush=True)
+    # The replacement's gap at eps 0.2 (1.2 cells): not replaced from 1 cell (the resolved force's own
+    # error stays), replaced from 1.5 and 2.
+    for cells in (1.0, 1.5, 2.0):
+        wall = 100 * (calib_run("normal", 0.2, r, "replace", cells) / brenner(0.2) - 1)
+        pair = [100 * (calib_run("pair", 0.2, r, "replace", cells, align=al) / TWO[0.2] - 1) for al in (0.0, 0.25, 0.5)]
+        print("replacement: from %g cells at eps 0.2, d/dx %d: normal %+.1f %%, pair %s %% (mean %+.1f)" %
+              (cells, r, wall, " / ".join("%+.1f" % y for y in pair), sum(pair) / 3), flush=True)
 
 
 # --- The liquid's inertia in the gap ----------------------------------------------------------------
