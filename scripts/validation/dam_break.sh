@@ -13,13 +13,15 @@
 # the columns are prepared first when missing (scripts/prepare_columns --scale S, into output/).
 # SPREAD=R (environment): slightly polydisperse columns instead (radii uniform in a (1 - R) ..
 # a (1 + R); scripts/prepare_columns --spread R, prepared when missing), outputs suffixed _spreadR.
+# PROJECTION=weighted (environment): the weighted projection (no liquid through the spheres;
+# docs/coupling.md) with BoomerAMG, outputs suffixed _weighted (about ten times the step's cost).
 # usage (through scripts/validate): scripts/validate dam_break [N|grid [T [S]]]
 # Cost on 2 cores (measured): d/dx 6 about 0.3 s per step of 1e-3 s (5 minutes per simulated
 # second), d/dx 8 about 0.84 s (14 minutes), d/dx 12 about 1.6 s (27 minutes), per column; with
 # NP=1 (side by side, a core each) S 2 at d/dx 4 about 0.56 s per step.
 set -euo pipefail
 case ${1:-8} in
-  -h|--help) sed -n "2,17s/^# \{0,1\}//p" "$0"; exit 0 ;;
+  -h|--help) sed -n "2,21s/^# \{0,1\}//p" "$0"; exit 0 ;;
   grid|[1-9]|[1-9][0-9]) ;;
   *) echo "dam_break: N must be whole cells per diameter (1-99) or 'grid', not '$1'" >&2; exit 2 ;;
 esac
@@ -32,6 +34,12 @@ awk -v r="$spread" 'BEGIN { exit !(r + 0 == r && r >= 0 && r <= 0.5) }' ||
 # The name suffixes of the height and the polydispersity studies (empty for the shipped columns).
 tall_tag=$([ "$scale" = 1 ] || echo "_x$scale")
 spread_tag=$([ "$spread" = 0 ] || echo "_spread$spread")
+projection=${PROJECTION:-plain}
+case $projection in
+  plain) proj_tag="" proj_opts=() ;;
+  weighted) proj_tag=_weighted proj_opts=(-penalization_projection weighted -pressure_pc_type hypre) ;;
+  *) echo "dam_break: PROJECTION must be plain or weighted, not '$projection'" >&2; exit 2 ;;
+esac
 cd "$VP_ROOT"
 labels=()
 bind=()  # mpirun's process binding: Open MPI's default unless the columns run side by side
@@ -53,6 +61,7 @@ column() {
     file=output/column_${kind}${tall_tag}${spread_tag}.csv
     out=${out}_spread$spread
   fi
+  out=$out$proj_tag
   if [ -n "$file" ]; then
     [ -e "$file" ] || scripts/prepare_columns $([ "$scale" = 1 ] || echo "--scale $scale") \
       $([ "$spread" = 0 ] || echo "--spread $spread") "$kind"
@@ -64,7 +73,7 @@ column() {
   local start=(-output_overwrite)
   if [ -e "$out/checkpoint_latest.h5" ]; then start=(-restart "$out/checkpoint_latest.h5"); fi
   echo "dam break $kind, d/dx $n ($grid cells), to rest or t = $t s -> $out (${start[*]})"
-  mpirun "${bind[@]}" -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" "${tall[@]}" -time_final "$t" -output_dir "$out" \
+  mpirun "${bind[@]}" -n "$NP" build/vpsolve -options_file "$case_file" -grid_n "$grid" "${tall[@]}" "${proj_opts[@]}" -time_final "$t" -output_dir "$out" \
     "${start[@]}" -monitor_every 200 -output_dt 0.1 -checkpoint_every 250 \
     -collapse_rest_speed 1e-4 -collapse_rest_window 0.5 | tee -a "$out.log"
   local stopped
@@ -84,17 +93,17 @@ else
     column loose "$n" >/dev/null & loose=$!
     column dense "$n" >/dev/null & dense=$!
     wait "$loose"; wait "$dense"  # a column that fails stops the script
-    tag=$tall_tag$spread_tag
+    tag=$tall_tag$spread_tag$proj_tag
     labels=("loose_d$n$tag=output/validate_dam_break_loose_d$n$tag" "dense_d$n$tag=output/validate_dam_break_dense_d$n$tag")
   else
     column loose "$n"
     column dense "$n"
   fi
-  if [ "$spread" != 0 ]; then  # beside the monodisperse columns of the same grid and height, when run
+  if [ "$spread" != 0 ] || [ -n "$proj_tag" ]; then  # beside the shipped set-up's columns of the same grid and height, when run
     for kind in dense loose; do
       dir=output/validate_dam_break_${kind}_d$n$tall_tag
       [ -d "$dir" ] && labels=("${kind}_d$n$tall_tag=$dir" "${labels[@]}")
     done
   fi
-  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$tall_tag$spread_tag" "${labels[@]}"
+  scripts/plot_dam_break --out docs/validation --name "dam_break_d$n$tall_tag$spread_tag$proj_tag" "${labels[@]}"
 fi
