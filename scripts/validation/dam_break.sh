@@ -31,7 +31,7 @@ scale=${3:-1}
 spread=${SPREAD:-0}
 awk -v r="$spread" 'BEGIN { exit !(r + 0 == r && r >= 0 && r <= 0.5) }' ||
   { echo "dam_break: SPREAD must be a number in [0, 0.5], not '$spread'" >&2; exit 2; }
-# The name suffixes of the height and the polydispersity studies (empty for the shipped columns).
+# The name suffixes of the height, polydispersity and projection studies (empty for the shipped set-up).
 tall_tag=$([ "$scale" = 1 ] || echo "_x$scale")
 spread_tag=$([ "$spread" = 0 ] || echo "_spread$spread")
 projection=${PROJECTION:-plain}
