@@ -158,20 +158,20 @@ def jeffery_turn(aspect, extra):
     return t, turned
 
 
+def crossing(t, turned, level):
+    """The time the turned angle first reaches level (linear between rows), or None."""
+    for k in range(1, len(t)):
+        if turned[k - 1] < level <= turned[k]:
+            return t[k - 1] + (level - turned[k - 1]) / (turned[k] - turned[k - 1]) * (t[k] - t[k - 1])
+    return None
+
+
 def jeffery():
     fig, ax = plt.subplots(figsize=(5.5, 3.8))
-    periods = {}
     for r_, extra in JEFFERY_RUNS:
         t, turned = jeffery_turn(r_, extra)
         T = 2 * math.pi * (r_ + 1 / r_)
-
-        def crossing(level):
-            for k in range(1, len(t)):
-                if turned[k - 1] < level <= turned[k]:
-                    return t[k - 1] + (level - turned[k - 1]) / (turned[k] - turned[k - 1]) * (t[k] - t[k - 1])
-            return None
-
-        half, full = crossing(math.pi), crossing(2 * math.pi)
+        half, full = crossing(t, turned, math.pi), crossing(t, turned, 2 * math.pi)
         for name, tc, n in (("half", half, 0.5), ("full", full, 1.0)):
             if tc is not None:
                 print("jeffery: aspect %d, %s turn at gamma t = %.3f: period %.3f vs Jeffery %.3f (%+.2f %%)" %
@@ -184,14 +184,12 @@ def jeffery():
         line, = ax.plot(t, [math.degrees(a) for a in turned],
                         label="aspect %d: period %s" % (r_, "%.2f (Jeffery %.2f)" % (full, T) if full else "not reached"))
         ax.plot(t, [math.degrees(a) for a in exact], "--", color=line.get_color(), lw=0.9)
-        periods[r_] = (full, T)
     ax.set_xlabel("gamma t")
     ax.set_ylabel("axis angle from the flow direction (deg)")
     ax.set_title("Prolate spheroids in shear, Re_p 0.01 (dashed: Jeffery 1922)", fontsize=10)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "jeffery_orbit.png"), dpi=120)
-    return periods
 
 
 def time_panels(fig, axes, ylabels, title, name):
