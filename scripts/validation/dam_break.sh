@@ -41,6 +41,7 @@ case $projection in
   *) echo "dam_break: PROJECTION must be plain or weighted, not '$projection'" >&2; exit 2 ;;
 esac
 cd "$VP_ROOT"
+mkdir -p output
 labels=()
 bind=()  # mpirun's process binding: Open MPI's default unless the columns run side by side
 
