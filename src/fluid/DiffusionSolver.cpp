@@ -47,6 +47,20 @@ DiffusionSolver::DiffusionSolver(const Grid& grid, const BoundaryConfig& bc, Vis
     VP_CALL(DMDAVecRestoreArrayDOF(f, SdiagL_, &dl));
     VP_CALL(DMDAVecRestoreArrayDOF(f, S_, &s));
   }
+  // S is 1 except next to no-slip walls: the faces where it is not, and each row's unit middle.
+  {
+    ReadValues s(S_);
+    forRows([&](PetscInt o, PetscInt, PetscInt len) {
+      PetscInt lo = 0, hi = len;
+      for (PetscInt n = 0; n < len; ++n) {
+        if (s[o + n] == 1) continue;
+        weighted_.push_back(o + n);
+        if (n < len / 2) lo = n + 1;
+        else hi = std::min(hi, n);
+      }
+      unitS_.push_back({lo, std::max(lo, hi)});
+    });
+  }
   if (assembled_) {
     assemble();
     VP_CALL(MatDuplicate(SL_, MAT_DO_NOT_COPY_VALUES, &A_));
@@ -171,23 +185,37 @@ DiffusionSolver::Weights DiffusionSolver::weights(const PetscInt gm[3]) const
   return w;
 }
 
-// One grid row of y = S (1 + theta) x - a S L x; x ghosted, theta may be null. __restrict: y never
-// aliases x, S or theta, so the compiler may vectorise the row.
-VP_VECTOR_CLONES void DiffusionSolver::stencilRow(PetscInt row, const Weights& w, const PetscScalar* __restrict xr,
-                                                  const PetscScalar* __restrict sr, const PetscScalar* __restrict tr,
-                                                  PetscScalar* __restrict yr)
+// y = S (1 + theta) x - a S L x over [b, e) of a grid row (S null: 1 there); x ghosted, theta may
+// be null. __restrict: y never aliases x, S or theta, so the compiler may vectorise the row.
+VP_VECTOR_CLONES void DiffusionSolver::stencilRange(PetscInt b, PetscInt e, const Weights& w, const PetscScalar* __restrict xr,
+                                                    const PetscScalar* __restrict sr, const PetscScalar* __restrict tr,
+                                                    PetscScalar* __restrict yr)
 {
   const double wx = w.w[0], wy = w.w[1], wz = w.w[2], wc = w.centre;
   const PetscInt sx = w.stride[0], sy = w.stride[1], sz = w.stride[2];
-  if (tr) {
-    for (PetscInt n = 0; n < row; ++n)
-      yr[n] = sr[n] * ((wc + tr[n]) * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
-                       wz * (xr[n + sz] + xr[n - sz]));
+  // The centre term minus the neighbours', in this order on every path (bitwise the same sums).
+  auto minusNeighbours = [&](PetscInt n, double centre) {
+    return centre - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) - wz * (xr[n + sz] + xr[n - sz]);
+  };
+  if (sr && tr) {
+    for (PetscInt n = b; n < e; ++n) yr[n] = sr[n] * minusNeighbours(n, (wc + tr[n]) * xr[n]);
+  } else if (sr) {
+    for (PetscInt n = b; n < e; ++n) yr[n] = sr[n] * minusNeighbours(n, wc * xr[n]);
+  } else if (tr) {
+    for (PetscInt n = b; n < e; ++n) yr[n] = minusNeighbours(n, (wc + tr[n]) * xr[n]);
   } else {
-    for (PetscInt n = 0; n < row; ++n)
-      yr[n] = sr[n] * (wc * xr[n] - wx * (xr[n + sx] + xr[n - sx]) - wy * (xr[n + sy] + xr[n - sy]) -
-                       wz * (xr[n + sz] + xr[n - sz]));
+    for (PetscInt n = b; n < e; ++n) yr[n] = minusNeighbours(n, wc * xr[n]);
   }
+}
+
+// One grid row (number r of this rank's rows): S is read only outside the row's unit middle.
+void DiffusionSolver::stencilRow(PetscInt r, PetscInt len, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
+                                 const PetscScalar* tr, PetscScalar* yr) const
+{
+  const auto [lo, hi] = unitS_[r];
+  stencilRange(0, lo, w, xr, sr, tr, yr);
+  stencilRange(lo, hi, w, xr, nullptr, tr, yr);
+  stencilRange(hi, len, w, xr, sr, tr, yr);
 }
 
 namespace {
@@ -226,8 +254,9 @@ double DiffusionSolver::sweep(Vec x, Vec b, double omega, Vec out) const
   WriteValues ov(out);
   std::vector<PetscScalar> y(3 * (g.end(0) - g.start(0)));  // one row of A x, kept in cache
   double bo = 0;
+  PetscInt r = 0;
   forRows([&](PetscInt o, PetscInt l, PetscInt len) {
-    stencilRow(len, w, xl + l, sv + o, th ? th + o : nullptr, y.data());
+    stencilRow(r++, len, w, xl + l, sv + o, th ? th + o : nullptr, y.data());
     bo += jacobiRow(len, omega, xl + l, y.data(), bv + o, dv + o, ov + l);
   });
   if (th) VP_CALL(VecRestoreArrayRead(theta_, &th));
@@ -272,11 +301,11 @@ VP_VECTOR_CLONES double DiffusionSolver::apply(Vec x, Vec y, bool dot, bool loca
   const PetscInt sx = 3, sy = 3 * gm[0], sz = 3 * gm[0] * gm[1];
   const PetscInt row = 3 * (g.end(0) - g.start(0));
   double xy = 0;
-  PetscInt o = 0;  // owned (global-vector) offset of the row
+  PetscInt o = 0, r = 0;  // owned (global-vector) offset and number of the row
   for (PetscInt k = g.start(2); k < g.end(2); ++k)
-    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row) {
+    for (PetscInt j = g.start(1); j < g.end(1); ++j, o += row, ++r) {
       const PetscScalar* xr = xl + (k - gs[2]) * sz + (j - gs[1]) * sy + (g.start(0) - gs[0]) * sx;
-      stencilRow(row, w, xr, s + o, th ? th + o : nullptr, ya + o);
+      stencilRow(r, row, w, xr, s + o, th ? th + o : nullptr, ya + o);
       const PetscScalar* yr = ya + o;
       if (dot) {  // the row is still in cache; a local x is zero on the fixed faces (fusedSolve)
         double sum = 0;
@@ -342,8 +371,15 @@ void DiffusionSolver::setOperator(double a, Vec theta)
     }
     VP_CALL(MatDiagonalSet(A_, diag_, ADD_VALUES));
   } else if (fused_) {
-    VP_CALL(diagonal(shell_, dinv_));
-    VP_CALL(VecReciprocal(dinv_));
+    // dinv = 1 / diag (diagonal() and its reciprocal in one pass).
+    PetscInt n;
+    VP_CALL(VecGetLocalSize(dinv_, &n));
+    ReadValues s(S_), sd(SdiagL_);
+    const PetscScalar* th = nullptr;
+    if (theta) VP_CALL(VecGetArrayRead(theta, &th));
+    WriteValues d(dinv_);
+    for (PetscInt i = 0; i < n; ++i) d[i] = 1 / (s[i] * (1 + (th ? th[i] : 0)) - a * sd[i]);
+    if (th) VP_CALL(VecRestoreArrayRead(theta, &th));
     if (mg_) mg_->setOperator(a, theta);
     return;
   } else {
@@ -358,7 +394,11 @@ int DiffusionSolver::solve(double a, Vec r, Vec du, double atol, Vec theta)
 {
   // A theta changes every step (moving particles); without it A changes with dt only.
   if (a != a_ || theta || theta_) setOperator(a, theta);
-  VP_CALL(VecPointwiseMult(r, S_, r));
+  {
+    WriteValues rv(r);
+    ReadValues sv(S_);
+    for (const PetscInt f : weighted_) rv[f] *= sv[f];  // r = S r (S is 1 elsewhere)
+  }
   if (!userAtol_) VP_CALL(KSPSetTolerances(ksp_, PETSC_DEFAULT, atol, PETSC_DEFAULT, PETSC_DEFAULT));
   if (fused_) return fusedSolve(r, du, atol);
   VP_CALL(KSPSolve(ksp_, r, du));
@@ -394,13 +434,13 @@ VP_VECTOR_CLONES void initialResidual(PetscInt n, const PetscScalar* __restrict 
   sums[2] = bb;
 }
 
-VP_VECTOR_CLONES void update(PetscInt n, double alpha, const PetscScalar* __restrict p, const PetscScalar* __restrict ap,
-            const PetscScalar* __restrict dinv, PetscScalar* __restrict x, PetscScalar* __restrict r, double sums[2])
+// r -= alpha q; sums r.D^-1 r and r.r. (x takes alpha p in the next pass, which reads p anyway.)
+VP_VECTOR_CLONES void update(PetscInt n, double alpha, const PetscScalar* __restrict ap, const PetscScalar* __restrict dinv,
+                             PetscScalar* __restrict r, double sums[2])
 {
   double rz = 0, rr = 0;
 #pragma omp simd reduction(+ : rz, rr)
   for (PetscInt i = 0; i < n; ++i) {
-    x[i] += alpha * p[i];
     r[i] -= alpha * ap[i];
     rz += r[i] * dinv[i] * r[i];
     rr += r[i] * r[i];
@@ -409,11 +449,22 @@ VP_VECTOR_CLONES void update(PetscInt n, double alpha, const PetscScalar* __rest
   sums[1] = rr;
 }
 
-VP_VECTOR_CLONES void newDirection(PetscInt n, double beta, const PetscScalar* __restrict r, const PetscScalar* __restrict dinv,
-                  PetscScalar* __restrict p)
+// x += alpha p, then p = D^-1 r + beta p (beta 0 with the last alpha: x alone).
+VP_VECTOR_CLONES void newDirection(PetscInt n, double alpha, double beta, const PetscScalar* __restrict r,
+                                   const PetscScalar* __restrict dinv, PetscScalar* __restrict x, PetscScalar* __restrict p)
 {
 #pragma omp simd
-  for (PetscInt i = 0; i < n; ++i) p[i] = dinv[i] * r[i] + beta * p[i];
+  for (PetscInt i = 0; i < n; ++i) {
+    x[i] += alpha * p[i];
+    p[i] = dinv[i] * r[i] + beta * p[i];
+  }
+}
+
+// x += alpha p.
+VP_VECTOR_CLONES void lastStep(PetscInt n, double alpha, const PetscScalar* __restrict p, PetscScalar* __restrict x)
+{
+#pragma omp simd
+  for (PetscInt i = 0; i < n; ++i) x[i] += alpha * p[i];
 }
 
 // The same passes without Jacobi (multigrid: the preconditioner is a separate pass). r = b - Ax;
@@ -518,7 +569,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     MPI_Allreduce(MPI_IN_PLACE, &pq, 1, MPI_DOUBLE, MPI_SUM, comm);
     if (!(pq > 0)) fail("the operator is not positive definite (p.Ap = " + std::to_string(pq) + ")");
     const double alpha = rz / pq;
-    // x += alpha p; r -= alpha q; sums r.D^-1 r (Jacobi) and r.r.
+    // r -= alpha q and x += alpha p (Jacobi: x with the new direction); sums r.D^-1 r (Jacobi), r.r.
     double s2[2] = {0, 0};
     {
       ReadValues pv(xL_), qv(q_), dv(dinv_);
@@ -529,7 +580,7 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
           return;
         }
         double row[2];
-        update(len, alpha, pv + l, qv + o, dv + o, xv + o, rv + o, row);
+        update(len, alpha, qv + o, dv + o, rv + o, row);
         s2[0] += row[0];
         s2[1] += row[1];
       });
@@ -537,7 +588,14 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     MPI_Allreduce(MPI_IN_PLACE, s2, 2, MPI_DOUBLE, MPI_SUM, comm);
     const double rnorm = std::sqrt(s2[1]);
     if (!std::isfinite(rnorm)) fail("the residual is not finite");
-    if (rnorm <= tol) return static_cast<int>(it);
+    if (rnorm <= tol) {
+      if (!mg_) {
+        ReadValues pv(xL_);
+        WriteValues xv(x);
+        forRows([&](PetscInt o, PetscInt l, PetscInt len) { lastStep(len, alpha, pv + l, xv + o); });
+      }
+      return static_cast<int>(it);
+    }
     // p = z + beta p.
     if (mg_) {
       const double rzNew = precondition();
@@ -551,8 +609,8 @@ int DiffusionSolver::fusedSolve(Vec b, Vec x, double atol)
     const double beta = s2[0] / rz;
     rz = s2[0];
     ReadValues rv(r_), dv(dinv_);
-    WriteValues pv(xL_);
-    forRows([&](PetscInt o, PetscInt l, PetscInt len) { newDirection(len, beta, rv + o, dv + o, pv + l); });
+    WriteValues xv(x), pv(xL_);
+    forRows([&](PetscInt o, PetscInt l, PetscInt len) { newDirection(len, alpha, beta, rv + o, dv + o, xv + o, pv + l); });
   }
   fail("no convergence in " + std::to_string(maxIts) + " iterations (-velocity_ksp_max_it)");
   return -1;

@@ -19,6 +19,8 @@
 #include "vp/grid/GhostRefresh.hpp"
 #include "vp/grid/Grid.hpp"
 #include <memory>
+#include <utility>
+#include <vector>
 #include <petscksp.h>
 
 namespace vp {
@@ -81,8 +83,10 @@ private:
     PetscInt stride[3];   // of the ghosted local array
   };
   Weights weights(const PetscInt ghostSize[3]) const;
-  static void stencilRow(PetscInt row, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
-                         const PetscScalar* tr, PetscScalar* yr);
+  static void stencilRange(PetscInt b, PetscInt e, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
+                           const PetscScalar* tr, PetscScalar* yr);
+  void stencilRow(PetscInt r, PetscInt len, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
+                  const PetscScalar* tr, PetscScalar* yr) const;
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
@@ -103,6 +107,8 @@ private:
   Vec z_ = nullptr;  // the preconditioned residual in the local layout (multigrid)
   double a_ = -1;
   bool userAtol_ = false;
+  std::vector<PetscInt> weighted_;                    // owned offsets of the faces with S != 1
+  std::vector<std::pair<PetscInt, PetscInt>> unitS_;  // per owned row: the range of its values where S = 1
 };
 
 template <class F>
