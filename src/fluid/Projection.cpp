@@ -73,14 +73,7 @@ StepStats Projection::predict(double dt, Vec theta, Vec thetaUs)
       for (std::size_t q = 0; q < n; q += 3)
         for (int c = 0; c < 3; ++c)
           rp[q + c] = dt * (-(c1 * np[q + c] - c0 * op[q + c]) + nu_ * rp[q + c] + force_[c]);
-    }
-    for (int c = 0; c < 3; ++c) {  // fixed faces: face 0 of a wall-bounded axis
-      if (!isFixedFace(g, c, g.start(c))) continue;
-      PetscInt hi[3] = {g.end(0), g.end(1), g.end(2)};
-      hi[c] = g.start(c) + 1;
-      for (PetscInt k = g.start(2); k < hi[2]; ++k)
-        for (PetscInt j = g.start(1); j < hi[1]; ++j)
-          for (PetscInt i = g.start(0); i < hi[0]; ++i) r.a[k][j][i][c] = 0;
+      diffusion_.forFixedFaces([&](PetscInt o) { rp[o] = 0; });  // face 0 of a wall-bounded axis
     }
     ops::addGradient(g, p.a, -dt / rho_, r.a);
   }
