@@ -208,14 +208,33 @@ VP_VECTOR_CLONES void DiffusionSolver::stencilRange(PetscInt b, PetscInt e, cons
   }
 }
 
-// One grid row (number r of this rank's rows): S is read only outside the row's unit middle.
+// One grid row (number r of this rank's rows): S is read only outside the row's unit middle, theta
+// only where the row has particles.
 void DiffusionSolver::stencilRow(PetscInt r, PetscInt len, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
                                  const PetscScalar* tr, PetscScalar* yr) const
 {
   const auto [lo, hi] = unitS_[r];
-  stencilRange(0, lo, w, xr, sr, tr, yr);
-  stencilRange(lo, hi, w, xr, nullptr, tr, yr);
-  stencilRange(hi, len, w, xr, sr, tr, yr);
+  const auto [t0, t1] = tr ? thetaRows_[r] : std::pair<PetscInt, PetscInt>{0, 0};
+  PetscInt cut[6] = {0, lo, hi, t0, t1, len};
+  std::sort(cut, cut + 6);
+  for (int k = 0; k < 5; ++k) {
+    const PetscInt b = cut[k], e = cut[k + 1];
+    if (b == e) continue;
+    stencilRange(b, e, w, xr, b < lo || b >= hi ? sr : nullptr, b >= t0 && b < t1 ? tr : nullptr, yr);
+  }
+}
+
+void DiffusionSolver::markTheta(Vec theta)
+{
+  thetaRows_.clear();
+  if (!theta) return;
+  ReadValues th(theta);
+  forRows([&](PetscInt o, PetscInt, PetscInt len) {
+    PetscInt t0 = 0, t1 = len;
+    while (t0 < len && th[o + t0] == 0) ++t0;
+    while (t1 > t0 && th[o + t1 - 1] == 0) --t1;
+    thetaRows_.push_back({t0, t1});
+  });
 }
 
 namespace {
@@ -359,6 +378,7 @@ void DiffusionSolver::setOperator(double a, Vec theta)
 {
   a_ = a;
   theta_ = theta;
+  markTheta(theta);
   if (assembled_) {
     // A = S (1 + theta) - a S L; the pattern is that of S L, so the preconditioner is rebuilt in place.
     VP_CALL(MatCopy(SL_, A_, SAME_NONZERO_PATTERN));

@@ -7,8 +7,8 @@
 // (S (1 + theta) - a S L) du = S r, symmetric positive definite (KSP prefix -velocity_).
 // The operator is matrix-free by default (one stencil sweep per product) and solved by a
 // hand-fused CG + Jacobi (-velocity_operator fused: the product carries the dot product p.Ap, one
-// pass updates x and r and forms both residual dot products, one pass the search direction; PETSc's
-// CG makes seven vector passes per iteration). -velocity_operator shell gives the same operator to
+// pass updates r and forms both residual dot products, one pass updates x and the search direction;
+// PETSc's CG makes seven vector passes per iteration). -velocity_operator shell gives the same operator to
 // PETSc's KSP (other Krylov methods, monitors); -velocity_operator assembled builds the AIJ matrix
 // for preconditioners that need one (hypre, gamg). With -velocity_mg_levels > 1 the fused CG is
 // preconditioned by a geometric multigrid V-cycle (ViscousMultigrid.hpp) instead of Jacobi: its
@@ -87,6 +87,8 @@ private:
                            const PetscScalar* tr, PetscScalar* yr);
   void stencilRow(PetscInt r, PetscInt len, const Weights& w, const PetscScalar* xr, const PetscScalar* sr,
                   const PetscScalar* tr, PetscScalar* yr) const;
+  // Each row's range of values where theta may be non-zero (thetaRows_).
+  void markTheta(Vec theta);
   void assemble();
   static PetscErrorCode mult(Mat A, Vec x, Vec y);
   static PetscErrorCode diagonal(Mat A, Vec d);
@@ -109,6 +111,7 @@ private:
   bool userAtol_ = false;
   std::vector<PetscInt> weighted_;                    // owned offsets of the faces with S != 1
   std::vector<std::pair<PetscInt, PetscInt>> unitS_;  // per owned row: the range of its values where S = 1
+  std::vector<std::pair<PetscInt, PetscInt>> thetaRows_;  // per owned row: outside this range theta is 0
 };
 
 template <class F>
