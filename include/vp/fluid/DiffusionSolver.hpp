@@ -42,6 +42,8 @@ public:
 
   // The operator S (1 + theta) - a S L of the last solve (or of setOperator), shell or assembled.
   Mat operatorMatrix() const { return assembled_ ? A_ : shell_; }
+  // Sets a and theta; theta is read here (its rows' non-zero stretches), so a theta changed in place
+  // must be set again (solve() does so).
   void setOperator(double a, Vec theta);
   Vec weights() const { return S_; }  // S
   bool assembled() const { return assembled_; }
