@@ -352,7 +352,13 @@ PetscErrorCode DiffusionSolver::mult(Mat A, Vec x, Vec y)
   PetscFunctionReturn(0);
 }
 
+namespace {
+
 // diag = S (1 + theta) - a S diag(L); 1 + theta on fixed faces (S = 1, diag(L) = 0 there).
+inline double diagonalEntry(double s, double theta, double a, double sDiagL) { return s * (1 + theta) - a * sDiagL; }
+
+} // namespace
+
 PetscErrorCode DiffusionSolver::diagonal(Mat A, Vec d)
 {
   DiffusionSolver* self;
@@ -366,7 +372,7 @@ PetscErrorCode DiffusionSolver::diagonal(Mat A, Vec d)
   PetscCall(VecGetArrayRead(self->SdiagL_, &sd));
   if (self->theta_) PetscCall(VecGetArrayRead(self->theta_, &th));
   PetscCall(VecGetArray(d, &y));
-  for (PetscInt i = 0; i < n; ++i) y[i] = s[i] * (1 + (th ? th[i] : 0)) - self->a_ * sd[i];
+  for (PetscInt i = 0; i < n; ++i) y[i] = diagonalEntry(s[i], th ? th[i] : 0, self->a_, sd[i]);
   PetscCall(VecRestoreArray(d, &y));
   if (th) PetscCall(VecRestoreArrayRead(self->theta_, &th));
   PetscCall(VecRestoreArrayRead(self->SdiagL_, &sd));
@@ -391,14 +397,14 @@ void DiffusionSolver::setOperator(double a, Vec theta)
     }
     VP_CALL(MatDiagonalSet(A_, diag_, ADD_VALUES));
   } else if (fused_) {
-    // dinv = 1 / diag (diagonal() and its reciprocal in one pass).
+    // dinv = 1 / diag in one pass.
     PetscInt n;
     VP_CALL(VecGetLocalSize(dinv_, &n));
     ReadValues s(S_), sd(SdiagL_);
     const PetscScalar* th = nullptr;
     if (theta) VP_CALL(VecGetArrayRead(theta, &th));
     WriteValues d(dinv_);
-    for (PetscInt i = 0; i < n; ++i) d[i] = 1 / (s[i] * (1 + (th ? th[i] : 0)) - a * sd[i]);
+    for (PetscInt i = 0; i < n; ++i) d[i] = 1 / diagonalEntry(s[i], th ? th[i] : 0, a, sd[i]);
     if (th) VP_CALL(VecRestoreArrayRead(theta, &th));
     if (mg_) mg_->setOperator(a, theta);
     return;
@@ -469,7 +475,7 @@ VP_VECTOR_CLONES void update(PetscInt n, double alpha, const PetscScalar* __rest
   sums[1] = rr;
 }
 
-// x += alpha p, then p = D^-1 r + beta p (beta 0 with the last alpha: x alone).
+// x += alpha p, then p = D^-1 r + beta p.
 VP_VECTOR_CLONES void newDirection(PetscInt n, double alpha, double beta, const PetscScalar* __restrict r,
                                    const PetscScalar* __restrict dinv, PetscScalar* __restrict x, PetscScalar* __restrict p)
 {
