@@ -15,7 +15,8 @@
                their gap on the grid, parallel, rotating):
                resolved force alone and with LLCM/BLCM against the exact values
   replacement: -lub_coupling add against replace at d/dx 12 (normal, the pair at three positions of its
-               gap on the grid, parallel, rotation) against the exact values
+               gap on the grid along an axis and along a diagonal, parallel, rotation) against the
+               exact values; the patch's depth; the replacement's gap and blend at eps 0.2
   confinement: the normal mode's and the pair's resolved force in boxes of 4 (the study's) to 12 d
   sensitivity: e at St 27 and 152 against grid, activation, saturation, R0, t_c, sub-steps and the
                mask's stiffness (lambda x0.5, x2)
@@ -779,57 +780,64 @@ def calib_geometry(mode, eps, box=4):
     return bc, one + ["-particle_angular_velocity", "0,%r,0" % (U / A)], U
 
 
-def pair_file(out, eps, v, shift=0.0):
-    """Two spheres of infinite mass approaching each other along x, each at v/2, gap SHRINK eps a,
-    the gap centred `shift` (a length) beyond the face plane x = 2."""
+def pair_file(out, eps, v, shift=0.0, diagonal=False):
+    """Two spheres of infinite mass approaching each other along x (or the x-y diagonal), each at v/2,
+    gap SHRINK eps a, the gap centred `shift` (a length) beyond the face plane x = 2 (and y = 2)."""
     os.makedirs(out, exist_ok=True)
     f = os.path.join(out, "pair.csv")
     gap = SHRINK * eps * A
-    x0 = 2 + shift - A - gap / 2
+    e = (math.sqrt(0.5), math.sqrt(0.5)) if diagonal else (1.0, 0.0)
+    c = (2 + shift, 2 + (shift if diagonal else 0))
     with open(f, "w") as o:
         o.write("id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n")
-        o.write("0,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0, A, v / 2))
-        o.write("1,%r,2,2,%r,1,%r,0,0,0,0,0\n" % (x0 + 2 * A + gap, A, -v / 2))
+        for k, side in enumerate((-1, 1)):
+            o.write("%d,%r,%r,2,%r,1,%r,%r,0,0,0,0\n" % (k, c[0] + side * (A + gap / 2) * e[0], c[1] + side * (A + gap / 2) * e[1],
+                                                     A, -side * v / 2 * e[0], -side * v / 2 * e[1]))
     return f
 
 
-def calib_value(mode, row, speed, resolved=True):
+def calib_value(mode, row, speed, resolved=True, diagonal=False):
     """Normalised resistance from a particle_0.csv row: the resolved force (fx..) or the correction (fcx..)."""
     f = "f" if resolved else "fc"
     t = "th" if resolved else "t"
     if mode == "normal":
         return row[f + "z"] / (6 * math.pi * MU * A * speed)
+    if mode == "pair" and diagonal:
+        return -(row[f + "x"] + row[f + "y"]) * math.sqrt(0.5) / (6 * math.pi * MU * A * speed)
     if mode in ("pair", "parallel"):
         return -row[f + "x"] / (6 * math.pi * MU * A * speed)
     return -row[t + "y"] / (8 * math.pi * MU * A ** 3 * (speed / A))
 
 
-def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0, box=4, patch=None):
+def calib_run(mode, eps, r, lub="none", cells=1.5, r0=1.0, shear=None, align=0.0, box=4, patch=None, blend=None,
+              diagonal=False):
     """Resolved run (lub none: the fluid, at nu dt / h^2 = 0.5 for RELAX; the value at its end, gap eps)
     or the DEM-only correction (lub blcm/llcm) at gap eps, at d/dx r, activated at `cells` (the
     tangential terms at `shear` cells; None: the solver's default, 0.06 or `cells` if smaller).
     lub "replace": the resolved run with -lub_coupling replace from `cells` (patches of depth `patch`
-    radii; None: the default), the resolved force plus the LLCM's together.
-    `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre).
+    radii, faded out over `blend` cells beyond; None: the defaults), the resolved force plus the
+    LLCM's together.
+    `align`: the pair's gap centre, in cells beyond a face plane (0: on it; 0.5: on a cell centre);
+    `diagonal`: the pair along the x-y diagonal (its gap centre `align` cells beyond both face planes).
     `box`: the cubic box's side in d (the resolved runs; 4 elsewhere)."""
     n = box * r
     bc, one, speed = calib_geometry(mode, eps, box)
     tag = "%s_eps%g_r%d" % (mode, eps, r) + ("" if lub == "none" else "_%s_c%g_R%g" % (lub, cells, r0))
     tag += ("" if shear is None else "_s%g" % shear) + ("" if align == 0 else "_a%g" % align) + ("" if box == 4 else "_box%g" % box)
-    tag += "" if patch is None else "_p%g" % patch
+    tag += ("" if patch is None else "_p%g" % patch) + ("" if blend is None else "_b%g" % blend) + ("_diag" if diagonal else "")
     out = os.path.join(scratch, "vp_col_cal_" + tag)
     common = ["-grid_n", "%d,%d,%d" % (n, n, n), "-grid_lo", "0,0,0", "-grid_hi", "%g,%g,%g" % (box, box, box), "-fluid_rho", 1,
               "-fluid_mu", MU, "-particle_radius", A, "-particle_density", 1, "-contact_tc", 1,
               "-contact_roughness", 1e-4] + bc
     if lub in ("none", "replace"):
         dt = 0.5 / r ** 2 / MU
-        part = ["-particles_file", pair_file(out + "_in", eps, speed, align / r), "-particles_fixed"] if one is None else one
+        part = ["-particles_file", pair_file(out + "_in", eps, speed, align / r, diagonal), "-particles_fixed"] if one is None else one
         film = ["-lub_model", "none"] if lub == "none" else \
             ["-lub_model", "llcm", "-lub_coupling", "replace", "-lub_activation_cells", cells] + \
-            ([] if patch is None else ["-lub_patch_gap", patch])
+            ([] if patch is None else ["-lub_patch_gap", patch]) + ([] if blend is None else ["-lub_patch_blend", blend])
         rows = run(out, *common, *part, *CASE_FLUID, "-time_dt", dt, "-time_final", RELAX, *film, case="none")
-        total = calib_value(mode, rows[-1], speed)
-        return total if lub == "none" else total + calib_value(mode, rows[-1], speed, resolved=False)
+        total = calib_value(mode, rows[-1], speed, diagonal=diagonal)
+        return total if lub == "none" else total + calib_value(mode, rows[-1], speed, resolved=False, diagonal=diagonal)
     # The correction at the final gap: the same spheres placed there (DEM only, one evaluation).
     part = one
     if one is None:
@@ -946,38 +954,54 @@ def pair_position_figure(by_gap):
 
 # --- The local replacement (-lub_coupling replace) ---------------------------------------------------
 REPLACEMENT_CELLS = 1.0  # kDefaultReplacementCells (include/vp/interactions/LubricationModel.hpp)
+BLEND_CELLS = 1.0        # kDefaultPatchBlendCells (same file)
+PATCH_GAP = 0.2          # kDefaultPatchGap (same file)
+
+
+def spread(err):
+    return "%s (mean %+.1f, range %.1f)" % (" / ".join("%+.1f" % y for y in err), sum(err) / len(err), max(err) - min(err))
 
 
 def replacement():
     """-lub_coupling add (the resolved force plus the unresolved part, the default) against replace
-    (the gap patches' normal force replaced by the LLCM's open-edge squeeze from REPLACEMENT_CELLS),
-    d/dx 12: each mode's error against its exact resistance; the pair at three positions of its gap on
-    the grid (a face plane, a quarter cell, a cell centre), its mean and range."""
+    (the gap patches' normal force replaced by the LLCM's open-edge squeeze below REPLACEMENT_CELLS,
+    faded out over BLEND_CELLS beyond), d/dx 12: each mode's error against its exact resistance; the
+    pair at three positions of its gap on the grid (a face plane, a quarter cell, a cell centre), along
+    x and along the x-y diagonal, its mean and range."""
     r = 12
     gaps = {"normal": [0.01, 0.02, 0.05, 0.1, 0.2, 0.5], "pair": [0.01, 0.05, 0.1, 0.2, 0.5],
             "parallel": [0.01, 0.05, 0.1], "rotation": [0.01, 0.05, 0.1]}
+    diagonal_gaps = [0.05, 0.1, 0.2]
+    aligns = [0.0, 0.25, 0.5]
+
+    def errors(mode, e, coupling, diagonal=False):
+        al = aligns if mode == "pair" else [0.0]
+        if coupling == "add":
+            corr = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
+            v = [calib_run(mode, e, r, align=a, diagonal=diagonal) + corr for a in al]
+        else:
+            v = [calib_run(mode, e, r, "replace", REPLACEMENT_CELLS, align=a, diagonal=diagonal) for a in al]
+        return [100 * (y / MODES[mode][0](e) - 1) for y in v]
+
     fig, axes = plt.subplots(1, 4, figsize=(16, 4.2))
     for ax, (mode, (exact, title)) in zip(axes, MODES.items()):
-        aligns = [0.0, 0.25, 0.5] if mode == "pair" else [0.0]
-        for k, coupling in enumerate(("add", "replace")):
-            means, lows, highs = [], [], []
-            for e in gaps[mode]:
-                x = exact(e)
-                if coupling == "add":
-                    corr = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
-                    v = [calib_run(mode, e, r, align=al) + corr for al in aligns]
-                else:
-                    v = [calib_run(mode, e, r, "replace", REPLACEMENT_CELLS, align=al) for al in aligns]
-                err = [100 * (y / x - 1) for y in v]
+        series = [("add", False, "s--"), ("replace", False, "o-")]
+        if mode == "pair":
+            series += [("add", True, "v:"), ("replace", True, "D-")]
+        for k, (coupling, diagonal, style) in enumerate(series):
+            means, lows, highs, used = [], [], [], diagonal_gaps if diagonal else gaps[mode]
+            for e in used:
+                err = errors(mode, e, coupling, diagonal)
                 means.append(sum(err) / len(err))
                 lows.append(min(err))
                 highs.append(max(err))
-                print("replacement: %-8s d/dx %d eps %5g  %-7s error %% %s%s" %
-                      (mode, r, e, coupling, " / ".join("%+.1f" % y for y in err),
-                       "  (mean %+.1f, range %.1f)" % (means[-1], highs[-1] - lows[-1]) if len(err) > 1 else ""), flush=True)
-            g = [e * (1.06 if k else 1) for e in gaps[mode]]
+                print("replacement: %-8s%s d/dx %d eps %5g  %-7s error %% %s" %
+                      (mode, " (diagonal)" if diagonal else "", r, e, coupling, spread(err) if len(err) > 1 else "%+.1f" % err[0]),
+                      flush=True)
+            g = [e * (1 + 0.04 * k) for e in used]
             ax.errorbar(g, means, yerr=[[m - lo for m, lo in zip(means, lows)], [hi - m for m, hi in zip(means, highs)]],
-                        fmt="o-" if k else "s--", capsize=3, label=coupling + (" (mean, range over positions)" if len(aligns) > 1 else ""))
+                        fmt=style, capsize=3, label=coupling + (", diagonal" if diagonal else "") +
+                        (" (mean, range over positions)" if mode == "pair" else ""))
         ax.axhline(0, color="k", lw=0.8)
         for band in (5, 15) if mode in ("normal", "pair") else (15,):
             ax.axhspan(-band, band, color="g", alpha=0.06)
@@ -986,25 +1010,34 @@ def replacement():
         ax.set_ylabel("error against exact (%)")
         ax.set_title(title, fontsize=9)
         ax.legend(fontsize=7)
-    fig.suptitle("-lub_coupling add and replace (h_act %g cell) against exact Stokes resistances, d/dx %d" % (REPLACEMENT_CELLS, r),
-                 fontsize=10)
+    fig.suptitle("-lub_coupling add and replace (h_act %g cell, blend %g cell) against exact Stokes resistances, d/dx %d"
+                 % (REPLACEMENT_CELLS, BLEND_CELLS, r), fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "lubrication_replacement.png"), dpi=120)
-    # The patch's depth (-lub_patch_gap) at eps 0.1, where the sphere's patch at a wall reaches a
-    # gap of 0.35 a and the pair's 0.2 a (at 0.25).
-    for patch in (0.15, 0.25, 0.4):
-        wall = 100 * (calib_run("normal", 0.1, r, "replace", REPLACEMENT_CELLS, patch=patch) / MODES["normal"][0](0.1) - 1)
-        pair = [100 * (calib_run("pair", 0.1, r, "replace", REPLACEMENT_CELLS, align=al, patch=patch) / TWO[0.1] - 1)
-                for al in (0.0, 0.25, 0.5)]
-        print("replacement: patch depth %g a at eps 0.1, d/dx %d: normal %+.1f %%, pair %s %%" %
-              (patch, r, wall, " / ".join("%+.1f" % y for y in pair)), flush=True)
-    # The replacement's gap at eps 0.2 (1.2 cells): not replaced from 1 cell (the resolved force's own
-    # error stays), replaced from 1.5 and 2.
-    for cells in (1.0, 1.5, 2.0):
-        wall = 100 * (calib_run("normal", 0.2, r, "replace", cells) / brenner(0.2) - 1)
-        pair = [100 * (calib_run("pair", 0.2, r, "replace", cells, align=al) / TWO[0.2] - 1) for al in (0.0, 0.25, 0.5)]
-        print("replacement: from %g cells at eps 0.2, d/dx %d: normal %+.1f %%, pair %s %% (mean %+.1f)" %
-              (cells, r, wall, " / ".join("%+.1f" % y for y in pair), sum(pair) / 3), flush=True)
+    # The patch's depth (-lub_patch_gap) over the replaced gaps: the wall, and the pair at the three
+    # positions along x and along the diagonal; their mean.
+    for patch in (0.15, PATCH_GAP, 0.25, 0.4):
+        depth = None if patch == PATCH_GAP else patch  # the default's runs are the table's
+        for e in (0.01, 0.05, 0.1, 0.2):
+            wall = 100 * (calib_run("normal", e, r, "replace", REPLACEMENT_CELLS, patch=depth) / brenner(e) - 1)
+            pairs = [100 * (calib_run("pair", e, r, "replace", REPLACEMENT_CELLS, align=al, patch=depth, diagonal=dg) / TWO[e] - 1)
+                     for dg in ((False, True) if e in diagonal_gaps else (False,)) for al in aligns]
+            print("replacement: patch depth %g a at eps %g, d/dx %d: normal %+.1f %%, pair %s %%" %
+                  (patch, e, r, wall, spread(pairs)), flush=True)
+    # The replacement's gap and blend at eps 0.2 (1.2 cells, where the resolved squeeze's own error
+    # is positive and the replaced one's negative): a sharp switch at 1 cell (not replaced) or at 2
+    # (replaced), and a weight falling from 1 at 1 cell over 1 (the default) or 2 cells.
+    for cells, blend in ((1.0, 0), (1.0, 1), (1.0, 2), (2.0, 0)):
+        wall = 100 * (calib_run("normal", 0.2, r, "replace", cells, blend=blend) / brenner(0.2) - 1)
+        pair = [100 * (calib_run("pair", 0.2, r, "replace", cells, align=al, blend=blend) / TWO[0.2] - 1) for al in aligns]
+        print("replacement: from %g cells, blend %g, at eps 0.2, d/dx %d: normal %+.1f %%, pair %s %%" %
+              (cells, blend, r, wall, spread(pair)), flush=True)
+    # Where the analytic inner force no longer holds: half the patch replaced at eps 0.5 (3 cells).
+    wall = 100 * (calib_run("normal", 0.5, r, "replace", REPLACEMENT_CELLS, blend=4) / brenner(0.5) - 1)
+    pair = 100 * (calib_run("pair", 0.5, r, "replace", REPLACEMENT_CELLS, blend=4, box=6) / TWO[0.5] - 1)
+    alone = 100 * (calib_run("pair", 0.5, r, box=6) / TWO[0.5] - 1)
+    print("replacement: half replaced at eps 0.5 (blend 4), d/dx %d: normal %+.1f %%, pair %+.1f %% in a 6 d box "
+          "(resolved alone %+.1f %%)" % (r, wall, pair, alone), flush=True)
 
 
 # --- The liquid's inertia in the gap ----------------------------------------------------------------

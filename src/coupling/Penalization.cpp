@@ -229,9 +229,10 @@ void Penalization::forces(const ParticleStore& s, Vec uStar, std::vector<double>
     Vec3 f;
     f[c] = rho_ * chi * stepLambda_ * (a[at] - us[at]) * dV;
     const Vec3 t = cross(r, f);
-    // In a gap patch the analytic squeeze stands for the normal force; its moment (the pressure of
-    // the tangential motions) stays resolved.
-    if (const Vec3* n = patches ? patches->patchAt(p, r) : nullptr) f -= (f[c] * (*n)[c]) * *n;
+    // In a gap patch the analytic squeeze stands for (its weight's fraction of) the normal force;
+    // its moment (the pressure of the tangential motions) stays resolved.
+    if (const LubricationPatches::Patch* q = patches ? patches->patchAt(p, r) : nullptr)
+      f -= (q->weight * f[c] * q->n[c]) * q->n;
     double* sum = &sums[kHydroSums * p];
     for (int m = 0; m < 3; ++m) {
       sum[m] += f[m];

@@ -27,6 +27,7 @@ void LubricationParams::resolveDefaults(double cellSize, bool coupled, double sa
   if (shearActivationCells == 0) shearActivationCells = std::min(activationCells, kDefaultShearActivationCells);
   gridGap_ = activationCells * cellSize;
   shearGridGap_ = shearActivationCells * cellSize;
+  blendGap_ = patchBlendCells * cellSize;
   if (saturation == 0) saturation = saturationFromRoughness > 0 ? saturationFromRoughness : kDefaultSaturation;
   resolved_ = true;
   if (model == LubModel::None) return;
@@ -70,30 +71,42 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
 
 namespace {
 
+PairForce scaled(double w, PairForce f)
+{
+  f.forceI = w * f.forceI;
+  f.torqueI = w * f.torqueI;
+  f.torqueJ = w * f.torqueJ;
+  return f;
+}
+
 // F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion (the state carries that part's
-// velocities only); a replaced pair: the first term over its patch (r0^2 = 2 R delta: the region
-// R0 = r0 / R).
-PairForce unresolvedPart(const LubricationParams& p, const PairState& s, LubPart part, double hAct, double a, bool replaced)
+// velocities only) below h_act; a pair replaced with weight w: w times the first term over its patch
+// (r0^2 = 2 R delta: the region R0 = r0 / R) and 1 - w times the former.
+PairForce unresolvedPart(const LubricationParams& p, const PairState& s, LubPart part, double hAct, double a, double w)
 {
   PairState at = s, act = s;
   at.gap = std::max(s.gap, p.saturation * a);
   act.gap = hAct;
-  if (replaced) {
-    const double R = s.reducedRadius();
-    return lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true, part);
+  PairForce f;
+  if (w < 1 && s.gap < hAct) {
+    f = lubricationModelForce(p.model, p.llcmRegion, at, false, part);
+    f -= lubricationModelForce(p.model, p.llcmRegion, act, false, part);
+    f = scaled(1 - w, f);
   }
-  PairForce f = lubricationModelForce(p.model, p.llcmRegion, at, false, part);
-  f -= lubricationModelForce(p.model, p.llcmRegion, act, false, part);
+  if (w > 0) {
+    const double R = s.reducedRadius();
+    f += scaled(w, lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true, part));
+  }
   return f;
 }
 
 } // namespace
 
-PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale, bool replaced)
+PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale, double replaced)
 {
   const double a = scale > 0 ? scale : std::min(s.radiusI, s.radiusJ);
   const double hAct = p.activationGap(a);
-  if (p.model == LubModel::None || !(s.gap < hAct || replaced) || s.gap <= contactGap) return {};
+  if (p.model == LubModel::None || !(s.gap < hAct || replaced > 0) || s.gap <= contactGap) return {};
 
   // The squeeze: the normal relative motion alone.
   PairState squeeze = s;
@@ -119,7 +132,7 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
     PairState shear = s;
     shear.velocityI = s.tangential(s.velocityI);
     shear.velocityJ = s.tangential(s.velocityJ);
-    f += unresolvedPart(p, shear, LubPart::Shear, hShear, a, false);
+    f += unresolvedPart(p, shear, LubPart::Shear, hShear, a, 0);
   }
   const Vec3 midGapMoment = cross(0.5 * s.gap * s.normal, f.forceI);
   f.torqueI += midGapMoment;
@@ -132,10 +145,10 @@ double lubricationResistance(const LubricationParams& p, const PairState& geomet
   PairState s = geometry;
   const double a = std::min(s.radiusI, s.radiusJ);
   s.gap = std::max(p.saturation * a, contactGap * (1 + 1e-12));
-  return squeezeResistance(p, s, contactGap, p.replace);  // a replaced pair's whole force is the larger
+  return squeezeResistance(p, s, contactGap, p.replace ? 1 : 0);  // a replaced pair's whole force is the larger
 }
 
-double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, bool replaced)
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, double replaced)
 {
   PairState s = state;
   s.velocityI = s.normal;  // unit approach speed

@@ -38,7 +38,10 @@ LubricationParams readLubricationOptions()
                        "llcm; docs/lubrication.md)") == 1;
   p.patchGap = o.real("-lub_patch_gap", p.patchGap,
                       "With -lub_coupling replace: the patch is the disk where the gap is below h + delta, delta = this "
-                      "times the smaller radius (0.25: r0 = a/2 between equal spheres, 0.71 a at a wall)");
+                      "times the smaller radius (0.2: r0 = 0.45 a between equal spheres, 0.63 a at a wall)");
+  p.patchBlendCells = o.real("-lub_patch_blend", p.patchBlendCells,
+                             "With -lub_coupling replace: grid cells beyond the activation gap over which the replaced "
+                             "fraction of a patch falls linearly from 1 to 0 (0: a sharp switch)");
   if (optionsHelpMode()) return p;
   if (!(p.activation >= 0 && std::isfinite(p.activation)))
     failOption("-lub_activation", "must be >= 0 (0: set from the grid spacing)", p.activation);
@@ -70,6 +73,10 @@ LubricationParams readLubricationOptions()
   if (!(p.patchGap > 0 && p.patchGap <= 0.5))
     failOption("-lub_patch_gap", "must be in (0, 0.5]: the patch (r0^2 = 2 R delta) must fit within the sphere", p.patchGap);
   if (p.patchGap != kDefaultPatchGap && !p.replace) failOption("-lub_patch_gap", "applies to -lub_coupling replace only");
+  if (!(p.patchBlendCells >= 0 && p.patchBlendCells <= 4))
+    failOption("-lub_patch_blend", "must be in [0, 4] grid cells", p.patchBlendCells);
+  if (p.patchBlendCells != kDefaultPatchBlendCells && !p.replace)
+    failOption("-lub_patch_blend", "applies to -lub_coupling replace only");
   if (p.replace && p.implicitSqueeze)
     failOption("-lub_integration", "implicit takes the added squeeze; with -lub_coupling replace use explicit");
   if (p.replace && p.inertia)

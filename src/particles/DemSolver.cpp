@@ -236,8 +236,8 @@ void DemSolver::computeForces(double dt)
     // force of both stays excluded and the correction stands for the film below that gap.
     const bool leaving = handOff_.pairLeaving(s, i, j, n, gap, P.departure[k]);
     // Hand-off: lubrication only while the surfaces are apart; in contact the contact law alone acts.
-    const bool replaced = lubricated && patches_ && patches_->replaced(s.id[i], s.id[j]);
-    const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving || replaced);
+    const double replaced = lubricated && patches_ ? patches_->replaced(s.id[i], s.id[j]) : 0;
+    const bool lubricating = lubricated && !touching && (gap < lub_.activationGap(amin) || leaving || replaced > 0);
     std::uint8_t impact = 0;
     if (!touching && !lubricating) {
       P.departure[k] = 0;
@@ -345,8 +345,8 @@ void DemSolver::computeForces(double dt)
         // (docs/collisions.md), so the correction stands for the film below the departure gap.
         const bool leaving = handOff_.wallLeaving(s, i, wall.velocity, n, dist - a);
         departing = departing || leaving;
-        const bool replaced = lubricated && patches_ && patches_->replaced(s.id[i], -1 - f);
-        if (overlap <= 0 && (dist < lubReach || ((leaving || replaced) && lubricated))) {  // hand-off: no lubrication in contact
+        const double replaced = lubricated && patches_ ? patches_->replaced(s.id[i], -1 - f) : 0;
+        if (overlap <= 0 && (dist < lubReach || ((leaving || replaced > 0) && lubricated))) {  // hand-off: no lubrication in contact
           PairState st;
           st.normal = -n;  // from the centre towards the wall
           st.gap = dist - a;

@@ -239,14 +239,15 @@ TEST_CASE("Replaced gap patches: a pair settling near the floor the same on 1, 2
   int size, rank;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  // Two spheres 0.12 cells apart and 0.2 cells above the floor, straddling the subdomain
-  // boundaries: with -lub_coupling replace every rank holding their faces must leave out the same
-  // patches (ghosts' included), and the DEM give the same pairs the whole force.
+  // Two spheres 0.12 cells apart and 1.5 cells above the floor (in the blend: half of each floor
+  // patch replaced), straddling the subdomain boundaries: with -lub_coupling replace every rank
+  // holding their faces must leave out the same patches with the same weights (ghosts' included),
+  // and the DEM give the same pairs the same force.
   const std::string file = "replace_pair_" + std::to_string(size) + ".csv";
   if (rank == 0) {
     FILE* f = std::fopen(file.c_str(), "w");
-    std::fprintf(f, "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n0,0.0295,0.039,0.011,0.01,1127,0,0,0,0,0,0\n"
-                    "1,0.0501,0.039,0.011,0.01,1127,0,0,0,0,0,0\n");
+    std::fprintf(f, "id,x,y,z,radius,density,vx,vy,vz,wx,wy,wz\n0,0.0295,0.039,0.0175,0.01,1127,0,0,0,0,0,0\n"
+                    "1,0.0501,0.039,0.0175,0.01,1127,0,0,0,0,0,0\n");
     std::fclose(f);
   }
   MPI_Barrier(PETSC_COMM_WORLD);

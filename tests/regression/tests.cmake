@@ -486,6 +486,8 @@ vp_bad_input(lub_replace_model 1 "option -lub_coupling: replace applies the LLCM
              -lub_model blcm -lub_coupling replace)
 vp_bad_input(lub_replace_wide_patch 1 "option -lub_patch_gap: must be in \\(0, 0.5\\]: the patch .r0\\^2 = 2 R delta. must fit within the sphere, got 0.6"
              -lub_model llcm -lub_coupling replace -lub_patch_gap 0.6)
+vp_bad_input(lub_replace_wide_blend 1 "option -lub_patch_blend: must be in \\[0, 4\\] grid cells, got 5"
+             -lub_model llcm -lub_coupling replace -lub_patch_blend 5)
 vp_bad_input(lub_replace_without_fluid 1 "option -lub_coupling: replace takes the gap patch out of the resolved force: it needs a fluid"
              -options_file ${VP_DEM_DATA}/box.opts -particle_position 0.02,0.02,0.02 -particle_radius 0.002 -lub_model llcm
              -lub_activation 0.05 -lub_coupling replace)

@@ -71,6 +71,9 @@ TEST_CASE("Lubrication options: bad values name the option and the range", "[lub
         "option -lub_patch_gap: must be in (0, 0.5]: the patch (r0^2 = 2 R delta) must fit within the sphere, got 0.6");
   CHECK(errorOf({{"-lub_model", "llcm"}, {"-lub_patch_gap", "0.3"}}) ==
         "option -lub_patch_gap: applies to -lub_coupling replace only");
+  CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_patch_blend", "5"}}) ==
+        "option -lub_patch_blend: must be in [0, 4] grid cells, got 5");
+  CHECK(errorOf({{"-lub_model", "llcm"}, {"-lub_patch_blend", "0"}}) == "option -lub_patch_blend: applies to -lub_coupling replace only");
   CHECK(errorOf({{"-lub_coupling", "replace"}, {"-lub_model", "llcm"}, {"-lub_integration", "implicit"}}) ==
         "option -lub_integration: implicit takes the added squeeze; with -lub_coupling replace use explicit");
   CHECK(errorOf({{"-lub_shear_activation_cells", "-0.1"}}).rfind("option -lub_shear_activation_cells: must be >= 0", 0) == 0);

@@ -10,12 +10,14 @@
 // there. With -lub_coupling replace a pair closer than h_act at the start of a fluid step has the
 // resolved normal force over its gap patch removed (coupling/LubricationPatches.hpp) and gets the
 // whole squeeze of the lubrication pressure over that disk instead, F_blcm (1 - h/H0) at
-// max(h, h_sat), H0 = h + delta (Llcm.hpp, open edge), whatever its gap during the step; its
+// max(h, h_sat), H0 = h + delta (Llcm.hpp, open edge), whatever its gap during the step; from h_act
+// to h_act + -lub_patch_blend cells a weight w falling from 1 to 0 replaces that fraction only; its
 // tangential terms stay added. A free-slip wall gets a quarter of the squeeze and no
 // shear (lubrication with one shear-free surface).
 // The same subtraction applies to the torques; then both torques get (h/2) n x F_i (the force acts
 // at mid-gap), so T_i + T_j = |x_j - x_i| n x F_i holds exactly at every gap.
 #include "vp/interactions/Lubrication.hpp"
+#include <algorithm>
 
 namespace vp {
 
@@ -27,7 +29,9 @@ constexpr double kDefaultActivationCells = 0.18;
 // the gaps whose squeeze depends on their position on the grid (docs/collisions_calibration.md).
 constexpr double kDefaultReplacementCells = 1.0;
 // Default depth of a replaced patch, delta / a (measured: docs/collisions_calibration.md).
-constexpr double kDefaultPatchGap = 0.25;
+constexpr double kDefaultPatchGap = 0.2;
+// Default width, in grid cells beyond h_act, over which the replacement fades out (measured: same page).
+constexpr double kDefaultPatchBlendCells = 1.0;
 // Default activation gap of the tangential terms, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultShearActivationCells = 0.06;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
@@ -63,6 +67,10 @@ struct LubricationParams {
   // r0^2 = 2 R delta (a: the smaller radius, a sphere's at a wall).
   double patchGap = kDefaultPatchGap;
   double patchRadiusSquared(double R, double a) const { return 2 * R * patchGap * a; }
+  // -lub_patch_blend, grid cells: the replacement's weight falls linearly from 1 at h_act to 0 at
+  // h_act + this (0: a sharp switch at h_act). Around a cell the resolved squeeze's own error changes
+  // sign with the gap, so a sharp switch leaves it whole just above h_act.
+  double patchBlendCells = kDefaultPatchBlendCells;
 
   // Sets the defaults where the options left 0 and checks the set (throws InputError naming the
   // option); called once, by the run's configuration (ParticleConfig::resolveDefaults). coupled: a
@@ -75,12 +83,22 @@ struct LubricationParams {
   void checkRadius(double rmax) const;
   // Activation gap h_act [m] of a pair whose smaller radius is a.
   double activationGap(double a) const { return activation > 0 ? activation * a : gridGap_; }
+  // Weight of the replacement of a pair at this gap (-lub_coupling replace; 0 without it).
+  double replacementWeight(double gap, double a) const
+  {
+    if (!replace) return 0;
+    const double hAct = activationGap(a);
+    if (gap < hAct) return 1;
+    return blendGap_ > 0 ? std::max(0.0, 1 - (gap - hAct) / blendGap_) : 0;
+  }
+  double patchBlendGap() const { return blendGap_; }
   // Activation gap h_act,t [m] of the tangential terms of that pair.
   double shearActivationGap(double a) const { return activation > 0 ? activation * a : shearGridGap_; }
 
 private:
   double gridGap_ = 0;       // activationCells * cell size [m]
   double shearGridGap_ = 0;  // shearActivationCells * cell size [m]
+  double blendGap_ = 0;      // patchBlendCells * cell size [m]
   bool resolved_ = false;
 };
 
@@ -93,10 +111,11 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
 // contactGap: the surface gap at which the contact model takes over (roughness). scale: the length
 // the activation and saturation gaps are fractions of; 0: the smaller radius (a spheroid gives its
 // equatorial semi-axis while its radii are those of the gap's curvatures).
-// replaced: the pair's gap patch was taken out of the resolved force (-lub_coupling replace): the
-// whole model squeeze at max(h, h_sat), at any gap (the tangential terms as without).
+// replaced: the weight w of the pair's gap patch taken out of the resolved force at the step's start
+// (-lub_coupling replace): w times the whole model squeeze at max(h, h_sat), at any gap, and 1 - w
+// times the unresolved part (the tangential terms as without).
 PairForce lubricationForce(const LubricationParams& p, const PairState& s, double contactGap, double scale = 0,
-                           bool replaced = false);
+                           double replaced = 0);
 
 // Largest normal resistance c = |F_n| / U_n the correction reaches for this pair geometry (at
 // max(h_sat, contactGap)); an explicit dashpot c on a reduced mass m is stable for dt < m / c with
@@ -104,6 +123,6 @@ PairForce lubricationForce(const LubricationParams& p, const PairState& s, doubl
 double lubricationResistance(const LubricationParams& p, const PairState& geometry, double contactGap);
 // The normal resistance c = |F_n| / U_n of the correction at the state's own gap: the squeeze force
 // on i is c (dh/dt) n, n from i to j (-lub_integration implicit takes it out of the explicit force).
-double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, bool replaced = false);
+double squeezeResistance(const LubricationParams& p, const PairState& state, double contactGap, double replaced = 0);
 
 } // namespace vp
