@@ -954,7 +954,7 @@ def pair_position_figure(by_gap):
 
 # --- The local replacement (-lub_coupling replace) ---------------------------------------------------
 REPLACEMENT_CELLS = 1.0  # kDefaultReplacementCells (include/vp/interactions/LubricationModel.hpp)
-BLEND_CELLS = 1.0        # kDefaultPatchBlendCells (same file)
+BLEND_CELLS = 3.0        # kDefaultPatchBlendCells (same file)
 PATCH_GAP = 0.2          # kDefaultPatchGap (same file)
 
 
@@ -967,7 +967,8 @@ def replacement():
     (the gap patches' normal force replaced by the LLCM's open-edge squeeze below REPLACEMENT_CELLS,
     faded out over BLEND_CELLS beyond), d/dx 12: each mode's error against its exact resistance; the
     pair at three positions of its gap on the grid (a face plane, a quarter cell, a cell centre), along
-    x and along the x-y diagonal, its mean and range."""
+    x and along the x-y diagonal, its mean and range. The pair at eps 0.5 in a 6 d box (the 4 d box's
+    images add 5 points there: confinement)."""
     r = 12
     gaps = {"normal": [0.01, 0.02, 0.05, 0.1, 0.2, 0.5], "pair": [0.01, 0.05, 0.1, 0.2, 0.5],
             "parallel": [0.01, 0.05, 0.1], "rotation": [0.01, 0.05, 0.1]}
@@ -976,11 +977,12 @@ def replacement():
 
     def errors(mode, e, coupling, diagonal=False):
         al = aligns if mode == "pair" else [0.0]
+        box = 6 if mode == "pair" and e >= 0.5 else 4
         if coupling == "add":
             corr = calib_run(mode, e, r, "llcm", DEFAULT_CELLS)
-            v = [calib_run(mode, e, r, align=a, diagonal=diagonal) + corr for a in al]
+            v = [calib_run(mode, e, r, align=a, diagonal=diagonal, box=box) + corr for a in al]
         else:
-            v = [calib_run(mode, e, r, "replace", REPLACEMENT_CELLS, align=a, diagonal=diagonal) for a in al]
+            v = [calib_run(mode, e, r, "replace", REPLACEMENT_CELLS, align=a, diagonal=diagonal, box=box) for a in al]
         return [100 * (y / MODES[mode][0](e) - 1) for y in v]
 
     fig, axes = plt.subplots(1, 4, figsize=(16, 4.2))
@@ -1024,20 +1026,19 @@ def replacement():
                      for dg in ((False, True) if e in diagonal_gaps else (False,)) for al in aligns]
             print("replacement: patch depth %g a at eps %g, d/dx %d: normal %+.1f %%, pair %s %%" %
                   (patch, e, r, wall, spread(pairs)), flush=True)
-    # The replacement's gap and blend at eps 0.2 (1.2 cells, where the resolved squeeze's own error
-    # is positive and the replaced one's negative): a sharp switch at 1 cell (not replaced) or at 2
-    # (replaced), and a weight falling from 1 at 1 cell over 1 (the default) or 2 cells.
-    for cells, blend in ((1.0, 0), (1.0, 1), (1.0, 2), (2.0, 0)):
-        wall = 100 * (calib_run("normal", 0.2, r, "replace", cells, blend=blend) / brenner(0.2) - 1)
-        pair = [100 * (calib_run("pair", 0.2, r, "replace", cells, align=al, blend=blend) / TWO[0.2] - 1) for al in aligns]
-        print("replacement: from %g cells, blend %g, at eps 0.2, d/dx %d: normal %+.1f %%, pair %s %%" %
-              (cells, blend, r, wall, spread(pair)), flush=True)
-    # Where the analytic inner force no longer holds: half the patch replaced at eps 0.5 (3 cells).
-    wall = 100 * (calib_run("normal", 0.5, r, "replace", REPLACEMENT_CELLS, blend=4) / brenner(0.5) - 1)
-    pair = 100 * (calib_run("pair", 0.5, r, "replace", REPLACEMENT_CELLS, blend=4, box=6) / TWO[0.5] - 1)
-    alone = 100 * (calib_run("pair", 0.5, r, box=6) / TWO[0.5] - 1)
-    print("replacement: half replaced at eps 0.5 (blend 4), d/dx %d: normal %+.1f %%, pair %+.1f %% in a 6 d box "
-          "(resolved alone %+.1f %%)" % (r, wall, pair, alone), flush=True)
+    # The replacement's gap and blend at eps 0.2 (1.2 cells) and 0.5 (3 cells), where the resolved
+    # squeeze's own error is positive and the replaced one's negative: a sharp switch at 1 cell (not
+    # replaced) or at 2 (replaced), and a weight falling from 1 at 1 cell over 1 or 3 (the default) cells.
+    for cells, blend in ((1.0, 0), (1.0, 1), (1.0, 3), (2.0, 0)):
+        tag = "from %g cells, blend %g, d/dx %d" % (cells, blend, r)
+        for e, box in ((0.2, 4), (0.5, 6)):
+            if e == 0.5 and cells > 1:
+                continue  # not replaced at 3 cells: the sharp switch at 1 cell's
+            b = None if blend == BLEND_CELLS else blend
+            wall = 100 * (calib_run("normal", e, r, "replace", cells, blend=b) / brenner(e) - 1)
+            pair = [100 * (calib_run("pair", e, r, "replace", cells, align=al, blend=b, box=box) / TWO[e] - 1) for al in aligns]
+            print("replacement: %s at eps %g: normal %+.1f %%, pair %s %%%s" %
+                  (tag, e, wall, spread(pair), " (6 d box)" if box == 6 else ""), flush=True)
 
 
 # --- The liquid's inertia in the gap ----------------------------------------------------------------

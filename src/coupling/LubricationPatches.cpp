@@ -32,7 +32,7 @@ void LubricationPatches::find(const ParticleStore& s)
   }
   if (n > 1) {
     // Every local pair, ghosts with ghosts too (all taken as owned by the search).
-    buckets_.build(s.x, n, lo, hi, 2 * rmax + lub_.activationGap(rmax) + lub_.patchBlendGap());
+    buckets_.build(s.x, n, lo, hi, 2 * rmax + lub_.reach(rmax));
     buckets_.forEachCandidate(n, [&](std::size_t i, std::size_t j) {
       const Vec3 d = s.x[j] - s.x[i];
       const double r = norm(d), ai = s.radius[i], aj = s.radius[j], amin = std::min(ai, aj);

@@ -114,7 +114,7 @@ void DemSolver::setUp(const std::vector<ParticleRecord>& all, bool restart)
   // contact takes over. DEM-only runs have no grid to tie the activation to: it must be given.
   lub_.checkRadius(rmax_);
   if (lub_.model != LubModel::None) {
-    lubGap_ = std::max(lub_.activationGap(rmax_), handOff_.departureGap());  // pairs stay listed while they depart
+    lubGap_ = std::max(lub_.reach(rmax_), handOff_.departureGap());  // pairs stay listed while they depart
     // Implicit squeeze: the explicit bound is gone (the tangential terms' logarithmic resistance stays explicit).
     lubStableSubstep_ = lub_.implicitSqueeze ? HUGE_VAL : 0.5 / lubricationRate(all);
   }

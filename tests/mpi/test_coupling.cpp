@@ -239,7 +239,7 @@ TEST_CASE("Replaced gap patches: a pair settling near the floor the same on 1, 2
   int size, rank;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  // Two spheres 0.12 cells apart and 1.5 cells above the floor (in the blend: half of each floor
+  // Two spheres 0.12 cells apart and 1.5 cells above the floor (in the blend: 5/6 of each floor
   // patch replaced), straddling the subdomain boundaries: with -lub_coupling replace every rank
   // holding their faces must leave out the same patches with the same weights (ghosts' included),
   // and the DEM give the same pairs the same force.

@@ -12,14 +12,15 @@ using vp::test::sphere;
 
 namespace {
 
-// The LLCM replaced below one cell of 0.1 m and faded out over the next (the default blend),
-// patches of the default depth delta = a/5.
+// The LLCM replaced below one cell of 0.1 m and faded out over the next, patches of the default
+// depth delta = a/5.
 LubricationParams replacing()
 {
   LubricationParams p;
   p.model = LubModel::Llcm;
   p.replace = true;
   p.activationCells = 1;
+  p.patchBlendCells = 1;
   p.resolveDefaults(0.1, true, 4e-4);
   return p;
 }

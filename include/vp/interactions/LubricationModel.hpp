@@ -31,7 +31,7 @@ constexpr double kDefaultReplacementCells = 1.0;
 // Default depth of a replaced patch, delta / a (measured: docs/collisions_calibration.md).
 constexpr double kDefaultPatchGap = 0.2;
 // Default width, in grid cells beyond h_act, over which the replacement fades out (measured: same page).
-constexpr double kDefaultPatchBlendCells = 1.0;
+constexpr double kDefaultPatchBlendCells = 3.0;
 // Default activation gap of the tangential terms, in grid cells (calibrated: docs/collisions.md).
 constexpr double kDefaultShearActivationCells = 0.06;
 // Saturation gap eps_sat = h/a when neither -lub_saturation nor a roughness is given: the roughness of
@@ -91,7 +91,8 @@ struct LubricationParams {
     if (gap < hAct) return 1;
     return blendGap_ > 0 ? std::max(0.0, 1 - (gap - hAct) / blendGap_) : 0;
   }
-  double patchBlendGap() const { return blendGap_; }
+  // The widest gap [m] at which a pair gets a force: h_act, and the blend's end with replace.
+  double reach(double a) const { return activationGap(a) + (replace ? blendGap_ : 0); }
   // Activation gap h_act,t [m] of the tangential terms of that pair.
   double shearActivationGap(double a) const { return activation > 0 ? activation * a : shearGridGap_; }
 
