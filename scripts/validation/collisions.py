@@ -267,10 +267,10 @@ def restitution():
     if WITHOUT:  # the cases' set-up with and without the departure, steel and glass in water
         sets = (sets[0], (HYDRO, WITHOUT, "v", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, WITHOUT, "<", GLASS_ST, (GLASS, WATER)))
-    if "--models" in sys.argv:  # the cases' set-up (steel, glass) against the published recipes
+    if "--models" in sys.argv:  # the cases' set-up (steel, glass) against the published recipes and the replacement
         sets = (sets[0], (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)), (HYDRO, COSTA, "D", MODEL_ST, steel),
-                ("keep", RETTINGER, "o", MODEL_ST, steel), (HYDRO, REPLACE, "v", MODEL_ST, steel),
-                ("keep", RETTINGER + REPLACE, "<", MODEL_ST, steel))
+                ("keep", RETTINGER, "o", MODEL_ST, steel), (HYDRO, REPLACE, "v", ST_LIST, steel),
+                (HYDRO, REPLACE, "P", GLASS_ST, (GLASS, WATER)), ("keep", RETTINGER + REPLACE, "<", ST_LIST[1:], steel))
     if "--no-history" in sys.argv:  # the cases' set-up with and without the history force, steel and glass in water
         sets = (sets[0], (HYDRO, NO_HISTORY, "D", ST_LIST, steel), (HYDRO, [], ">", GLASS_ST, (GLASS, WATER)),
                 (HYDRO, NO_HISTORY, "<", GLASS_ST, (GLASS, WATER)))
