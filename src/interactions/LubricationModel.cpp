@@ -71,14 +71,6 @@ PairForce lubricationModelForce(LubModel model, double llcmRegion, const PairSta
 
 namespace {
 
-PairForce scaled(double w, PairForce f)
-{
-  f.forceI = w * f.forceI;
-  f.torqueI = w * f.torqueI;
-  f.torqueJ = w * f.torqueJ;
-  return f;
-}
-
 // F_model(max(h, h_sat)) - F_model(h_act) of one part of the motion (the state carries that part's
 // velocities only) below h_act; a pair replaced with weight w: w times the first term over its patch
 // (r0^2 = 2 R delta: the region R0 = r0 / R) and 1 - w times the former.
@@ -91,11 +83,13 @@ PairForce unresolvedPart(const LubricationParams& p, const PairState& s, LubPart
   if (w < 1 && s.gap < hAct) {
     f = lubricationModelForce(p.model, p.llcmRegion, at, false, part);
     f -= lubricationModelForce(p.model, p.llcmRegion, act, false, part);
-    f = scaled(1 - w, f);
+    f *= 1 - w;
   }
   if (w > 0) {
     const double R = s.reducedRadius();
-    f += scaled(w, lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true, part));
+    PairForce patch = lubricationModelForce(p.model, std::sqrt(p.patchRadiusSquared(R, a)) / R, at, true, part);
+    patch *= w;
+    f += patch;
   }
   return f;
 }

@@ -63,6 +63,13 @@ struct PairForce {
     torqueJ -= o.torqueJ;
     return *this;
   }
+  PairForce& operator*=(double w)
+  {
+    forceI *= w;
+    torqueI *= w;
+    torqueJ *= w;
+    return *this;
+  }
 };
 
 } // namespace vp
